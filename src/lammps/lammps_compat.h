@@ -1,0 +1,48 @@
+// Hides the two LAMMPS APIs a fix uses that changed on 24 Mar 2022.
+// HARDCONTACT_MODERN_API is set by cmake/HardcontactLammpsApi.cmake from a compile check
+// against the LAMMPS headers in use (there is no version macro to test).
+#pragma once
+
+#include "comm.h"
+#include "fix.h"
+#include "neighbor.h"
+#if HARDCONTACT_MODERN_API
+#include "neigh_request.h"
+#else
+#include "neigh_request.h"
+#endif
+
+namespace hardcontact {
+namespace compat {
+
+// A half list of every owned/ghost pair closer than r_i + r_j + skin, holding cross-processor
+// pairs on both processors (newton off), with a stencil that reaches `cutoff`.
+inline void request_size_list(LAMMPS_NS::Fix *fix, double cutoff)
+{
+#if HARDCONTACT_MODERN_API
+  auto *req = fix->neighbor->add_request(fix, LAMMPS_NS::NeighConst::REQ_SIZE |
+                                                 LAMMPS_NS::NeighConst::REQ_NEWTON_OFF);
+  req->set_cutoff(cutoff);
+#else
+  const int irequest = fix->neighbor->request(fix, fix->instance_me);
+  LAMMPS_NS::NeighRequest *req = fix->neighbor->requests[irequest];
+  req->pair = 0;
+  req->fix = 1;
+  req->size = 1;
+  req->newton = 2;
+  req->cut = 1;
+  req->cutoff = cutoff;
+#endif
+}
+
+inline void forward_comm(LAMMPS_NS::Fix *fix)
+{
+#if HARDCONTACT_MODERN_API
+  fix->comm->forward_comm(fix);
+#else
+  fix->comm->forward_comm_fix(fix);
+#endif
+}
+
+}    // namespace compat
+}    // namespace hardcontact
