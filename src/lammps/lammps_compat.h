@@ -5,27 +5,26 @@
 
 #include "comm.h"
 #include "fix.h"
+#include "neigh_request.h"
 #include "neighbor.h"
-#if HARDCONTACT_MODERN_API
-#include "neigh_request.h"
-#else
-#include "neigh_request.h"
-#endif
 
 namespace hardcontact {
 namespace compat {
 
 // A half list of every owned/ghost pair closer than r_i + r_j + skin, holding cross-processor
 // pairs on both processors (newton off), with a stencil that reaches `cutoff`.
-inline void request_size_list(LAMMPS_NS::Fix *fix, double cutoff)
+// `instance` is the fix's instance_me (protected in Fix, so the caller passes it).
+inline void request_size_list(LAMMPS_NS::Neighbor *neighbor, LAMMPS_NS::Fix *fix, int instance,
+                              double cutoff)
 {
 #if HARDCONTACT_MODERN_API
-  auto *req = fix->neighbor->add_request(fix, LAMMPS_NS::NeighConst::REQ_SIZE |
+  (void) instance;
+  auto *req = neighbor->add_request(fix, LAMMPS_NS::NeighConst::REQ_SIZE |
                                                  LAMMPS_NS::NeighConst::REQ_NEWTON_OFF);
   req->set_cutoff(cutoff);
 #else
-  const int irequest = fix->neighbor->request(fix, fix->instance_me);
-  LAMMPS_NS::NeighRequest *req = fix->neighbor->requests[irequest];
+  const int irequest = neighbor->request(fix, instance);
+  LAMMPS_NS::NeighRequest *req = neighbor->requests[irequest];
   req->pair = 0;
   req->fix = 1;
   req->size = 1;
@@ -35,12 +34,12 @@ inline void request_size_list(LAMMPS_NS::Fix *fix, double cutoff)
 #endif
 }
 
-inline void forward_comm(LAMMPS_NS::Fix *fix)
+inline void forward_comm(LAMMPS_NS::Comm *comm, LAMMPS_NS::Fix *fix)
 {
 #if HARDCONTACT_MODERN_API
-  fix->comm->forward_comm(fix);
+  comm->forward_comm(fix);
 #else
-  fix->comm->forward_comm_fix(fix);
+  comm->forward_comm_fix(fix);
 #endif
 }
 
