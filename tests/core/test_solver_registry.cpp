@@ -1,0 +1,51 @@
+// The `solver` keyword's table (solver_registry.cpp): known names build a working solver,
+// unknown names give nullptr, and solver_names() lists what make_solver accepts.
+#include "solver.h"
+
+#include "core_test_util.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+
+using namespace hardcontact;
+
+TEST(SolverRegistry, UzawaIsRegisteredAndSolves)
+{
+  std::unique_ptr<Solver> s = make_solver("uzawa");
+  ASSERT_NE(s, nullptr);
+
+  // A working solver, not just a non-null pointer: two unit spheres touching, one at rest,
+  // one arriving at 1: restitution 0 leaves both at 1/2.
+  ContactProblem p = hctest::make_problem(0.1, {1.0, 1.0}, {Vec3(1, 0, 0), Vec3(0, 0, 0)});
+  hctest::add_pair(p, 0, 1, Vec3(0, 0, 0), Vec3(2, 0, 0), 1.0, 1.0);
+  SerialOps ops;
+  SolverSettings set;
+  set.tol = 1e-12;
+  std::vector<double> mu;
+  std::vector<Vec3> u;
+  const SolveReport r = s->solve(p, set, ops, mu, u);
+  EXPECT_TRUE(r.converged);
+  EXPECT_NEAR(u[0].x(), 0.5, 1e-14);
+  EXPECT_NEAR(u[1].x(), 0.5, 1e-14);
+}
+
+TEST(SolverRegistry, UnknownNameGivesNullptr)
+{
+  EXPECT_EQ(make_solver("no-such-solver"), nullptr);
+  EXPECT_EQ(make_solver(""), nullptr);
+  EXPECT_EQ(make_solver("Uzawa"), nullptr);    // names are case-sensitive
+  EXPECT_EQ(make_solver("uzawa "), nullptr);
+}
+
+TEST(SolverRegistry, NamesListUzawaAndEveryNameBuilds)
+{
+  const std::vector<std::string> names = solver_names();
+  EXPECT_NE(std::find(names.begin(), names.end(), "uzawa"), names.end());
+  for (const std::string &n : names) EXPECT_NE(make_solver(n), nullptr) << n;
+  // Names are unique, and each call gives a fresh object.
+  std::vector<std::string> sorted = names;
+  std::sort(sorted.begin(), sorted.end());
+  EXPECT_EQ(std::adjacent_find(sorted.begin(), sorted.end()), sorted.end());
+  EXPECT_NE(make_solver("uzawa").get(), make_solver("uzawa").get());
+}
