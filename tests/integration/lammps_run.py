@@ -1,0 +1,411 @@
+"""Run LAMMPS decks and read their output, for the integration tests of hardcontact.
+
+Standard library + numpy only. Typical use in a test script:
+
+    import lammps_run as lr
+
+    args = lr.test_args(__doc__)            # --lmp, --np, --workdir (what ctest passes)
+    res = lr.run_deck(args.lmp, DECK, args.np, args.workdir, variables={"seed": 42})
+    lr.check(res.thermo[-1]["Step"][-1] == 100, "run reached step 100")
+    frames = lr.read_dump(res.path("dump.atoms"))
+
+A failed run (non-zero exit, timeout) raises LammpsRunError with the ERROR lines and the
+tail of the output, unless expect_error=True, which instead requires a failure.
+"""
+
+import argparse
+import glob
+import gzip
+import os
+import shutil
+import signal
+import subprocess
+import sys
+import time
+from collections import namedtuple
+from pathlib import Path
+
+import numpy as np
+
+__all__ = [
+    "RunResult", "LammpsRunError", "run_deck", "parse_thermo", "read_dump", "read_dump_local",
+    "DumpFrame", "test_args", "fresh_workdir", "check", "main",
+]
+
+DEFAULT_TIMEOUT = 600.0
+_MARKER = ".lammps_run_workdir"
+_REPO = Path(__file__).resolve().parents[2]
+
+
+class LammpsRunError(RuntimeError):
+    """LAMMPS did not do what the test expected (failed, timed out, or succeeded when an
+    error was expected). The message holds the command, the ERROR lines and output tails."""
+
+
+class RunResult:
+    """What one LAMMPS run left behind.
+
+    returncode  exit status (negative: killed by that signal; None: timed out)
+    log         text of log.lammps ('' if LAMMPS never opened it)
+    stdout, stderr
+    thermo      list, one entry per thermo block (one per run/minimize): dict column name ->
+                numpy array (int64 for integer columns such as Step/Atoms, float64 otherwise)
+    errors      'ERROR...' lines (log, stdout and stderr, in that order, without duplicates)
+    warnings    'WARNING...' lines, likewise
+    workdir     Path the deck ran in; cmd: the command line; seconds: wall time
+    """
+
+    def __init__(self, cmd, workdir, returncode, stdout, stderr, log, seconds, timed_out):
+        self.cmd = cmd
+        self.workdir = Path(workdir)
+        self.returncode = returncode
+        self.stdout = stdout
+        self.stderr = stderr
+        self.log = log
+        self.seconds = seconds
+        self.timed_out = timed_out
+        self.thermo = parse_thermo(log if log else stdout)
+        self.errors = _grep_lines("ERROR", log, stdout, stderr)
+        self.warnings = _grep_lines("WARNING", log, stdout, stderr)
+
+    def path(self, name):
+        """Path of an output file of the run (relative to its working directory)."""
+        return self.workdir / name
+
+    def thermo_last(self, column, block=-1):
+        """Last value of a thermo column in a block (default: the last block)."""
+        return self.thermo[block][column][-1]
+
+    def summary(self, tail=40):
+        lines = [
+            "command: " + " ".join(str(c) for c in self.cmd),
+            "workdir: %s" % self.workdir,
+            "exit status: %s%s" % (self.returncode, " (timed out)" if self.timed_out else ""),
+        ]
+        if self.errors:
+            lines.append("ERROR lines:")
+            lines += ["  " + e for e in self.errors]
+        for name, text in (("stdout", self.stdout), ("stderr", self.stderr)):
+            t = text.rstrip().splitlines()[-tail:]
+            if t:
+                lines.append("--- last %d lines of %s:" % (len(t), name))
+                lines += t
+        return "\n".join(lines)
+
+    def __repr__(self):
+        return "RunResult(returncode=%r, blocks=%d, errors=%d, workdir=%s)" % (
+            self.returncode, len(self.thermo), len(self.errors), self.workdir)
+
+
+def _grep_lines(word, *texts):
+    seen, out = set(), []
+    for text in texts:
+        for line in (text or "").splitlines():
+            s = line.strip()
+            if s.startswith(word) and s not in seen:
+                seen.add(s)
+                out.append(s)
+    return out
+
+
+# ----------------------------------------------------------------------------------- running
+
+def _mpirun():
+    exe = os.environ.get("HARDCONTACT_MPIRUN") or shutil.which("mpirun")
+    if not exe:
+        raise LammpsRunError("mpirun not found (install openmpi-bin, or set HARDCONTACT_MPIRUN)")
+    return exe
+
+
+def _looks_like_deck_text(deck):
+    return isinstance(deck, str) and ("\n" in deck or not os.path.isfile(deck))
+
+
+def run_deck(lmp, deck, np=1, workdir=".", variables=None, expect_error=False,
+             timeout=DEFAULT_TIMEOUT, args=(), files=(), deck_name="in.deck", log_name="log.lammps",
+             env=None):
+    """Run one deck and return a RunResult.
+
+    lmp          the LAMMPS executable (build/lmp_hardcontact)
+    deck         the input text, or the path of an input file (run with -in <absolute path>)
+    np           number of MPI ranks: 1 = plain exec, > 1 = mpirun --oversubscribe -np N
+    workdir      directory the deck runs in (created); relative file names in the deck refer to it
+    variables    {name: value} -> -var name value (a list/tuple value gives several words)
+    expect_error True: the run must fail (non-zero exit); its result is returned for checks
+    timeout      seconds of wall time before the whole process group is killed
+    args         extra command-line words for LAMMPS (e.g. ["-echo", "screen"])
+    files        paths copied into workdir before the run (data files, includes)
+    """
+    workdir = Path(workdir).resolve()
+    workdir.mkdir(parents=True, exist_ok=True)
+    (workdir / _MARKER).touch()
+    for f in files:
+        shutil.copy(str(f), str(workdir))
+    if _looks_like_deck_text(deck):
+        deck_path = workdir / deck_name
+        deck_path.write_text(deck if deck.endswith("\n") else deck + "\n")
+    else:
+        deck_path = Path(deck).resolve()
+    log_path = workdir / log_name
+    if log_path.exists():
+        log_path.unlink()
+
+    cmd = [str(Path(lmp).resolve()), "-in", str(deck_path), "-log", log_name]
+    for name, value in (variables or {}).items():
+        values = value if isinstance(value, (list, tuple)) else [value]
+        cmd += ["-var", str(name)] + [str(v) for v in values]
+    cmd += [str(a) for a in args]
+    if int(np) > 1:
+        cmd = [_mpirun(), "--allow-run-as-root", "--oversubscribe", "--bind-to", "none",
+               "-np", str(int(np))] + cmd
+
+    run_env = dict(os.environ)
+    run_env.setdefault("OMPI_ALLOW_RUN_AS_ROOT", "1")
+    run_env.setdefault("OMPI_ALLOW_RUN_AS_ROOT_CONFIRM", "1")
+    run_env.setdefault("OMPI_MCA_mpi_yield_when_idle", "1")   # ranks > cores: do not spin
+    run_env.setdefault("OMP_NUM_THREADS", "1")
+    if env:
+        run_env.update({k: str(v) for k, v in env.items()})
+
+    t0 = time.monotonic()
+    timed_out = False
+    with open(workdir / "stdout.txt", "w+") as out, open(workdir / "stderr.txt", "w+") as err:
+        proc = subprocess.Popen(cmd, cwd=str(workdir), stdin=subprocess.DEVNULL, stdout=out,
+                                stderr=err, env=run_env, start_new_session=True)
+        try:
+            returncode = proc.wait(timeout=timeout)
+        except subprocess.TimeoutExpired:
+            timed_out = True
+            _kill_group(proc)
+            returncode = None
+        out.seek(0)
+        err.seek(0)
+        stdout, stderr = out.read(), err.read()
+    seconds = time.monotonic() - t0
+    log = log_path.read_text(errors="replace") if log_path.exists() else ""
+
+    res = RunResult(cmd, workdir, returncode, stdout, stderr, log, seconds, timed_out)
+    if timed_out:
+        raise LammpsRunError("LAMMPS run timed out after %.0f s\n%s" % (timeout, res.summary()))
+    if expect_error and returncode == 0:
+        raise LammpsRunError("LAMMPS run was expected to fail but exited 0\n" + res.summary())
+    if not expect_error and returncode != 0:
+        raise LammpsRunError("LAMMPS run failed\n" + res.summary())
+    return res
+
+
+def _kill_group(proc):
+    for sig, wait in ((signal.SIGTERM, 5), (signal.SIGKILL, 5)):
+        try:
+            os.killpg(proc.pid, sig)
+        except ProcessLookupError:
+            return
+        try:
+            proc.wait(timeout=wait)
+            return
+        except subprocess.TimeoutExpired:
+            pass
+
+
+# ----------------------------------------------------------------------------------- thermo
+
+def _is_number(tok):
+    try:
+        float(tok)
+        return True
+    except ValueError:
+        return False
+
+
+def _columns_to_arrays(names, rows):
+    out = {}
+    for j, name in enumerate(names):
+        col = [r[j] for r in rows]
+        if all(_is_int_token(t) for t in col):
+            out[name] = np.array([int(t) for t in col], dtype=np.int64)
+        else:
+            out[name] = np.array([float(t) for t in col], dtype=np.float64)
+    return out
+
+
+def _is_int_token(tok):
+    t = tok[1:] if tok[:1] in "+-" else tok
+    return t.isdigit()
+
+
+def parse_thermo(text):
+    """Thermo blocks of a LAMMPS log (or screen output): a list with one dict per run, column
+    name -> numpy array. A block starts at the header line printed after 'Per MPI rank memory
+    allocation' (thermo_style one/custom) and ends at 'Loop time' (or at an ERROR / the end of
+    the text for a run that died). Lines inside a block that are not a full row of numbers
+    (warnings, fix output) are skipped."""
+    blocks = []
+    lines = text.splitlines()
+    i, n = 0, len(lines)
+    while i < n:
+        if not lines[i].startswith("Per MPI rank memory allocation"):
+            i += 1
+            continue
+        i += 1
+        while i < n and not lines[i].strip():
+            i += 1
+        if i >= n:
+            break
+        names = lines[i].split()
+        if not names or any(_is_number(t) for t in names):
+            continue
+        rows = []
+        i += 1
+        while i < n:
+            line = lines[i]
+            if line.startswith("Loop time") or line.startswith("ERROR") or \
+                    line.startswith("Per MPI rank memory allocation"):
+                break
+            toks = line.split()
+            if len(toks) == len(names) and all(_is_number(t) for t in toks):
+                rows.append(toks)
+            i += 1
+        blocks.append(_columns_to_arrays(names, rows))
+    return blocks
+
+
+# ----------------------------------------------------------------------------------- dumps
+
+# (timestep, {column: numpy array}, box bounds: array (3,2) or (3,3) for triclinic)
+DumpFrame = namedtuple("DumpFrame", ["timestep", "columns", "box"])
+
+
+def _open_text(path):
+    path = str(path)
+    if path.endswith(".gz"):
+        return gzip.open(path, "rt")
+    return open(path, "r")
+
+
+def _convert_column(tokens):
+    try:
+        if all(_is_int_token(t) for t in tokens):
+            return np.array(tokens, dtype=np.int64)
+        return np.array(tokens, dtype=np.float64)
+    except ValueError:
+        return np.array(tokens, dtype=object)    # e.g. element names
+
+
+def _read_frames(path, item):
+    """Generic reader of LAMMPS text dumps whose per-frame table is 'ITEM: <item> cols...'."""
+    paths = sorted(glob.glob(str(path))) if any(c in str(path) for c in "*?[") else [path]
+    if not paths:
+        raise FileNotFoundError(path)
+    frames = []
+    for p in paths:
+        with _open_text(p) as f:
+            lines = f.read().splitlines()
+        i, n = 0, len(lines)
+        while i < n:
+            if not lines[i].startswith("ITEM: TIMESTEP"):
+                i += 1
+                continue
+            timestep = int(lines[i + 1].split()[0])
+            i += 2
+            count, box, names = None, None, None
+            while i < n:
+                line = lines[i]
+                if line.startswith("ITEM: NUMBER OF"):
+                    count = int(lines[i + 1].split()[0])
+                    i += 2
+                elif line.startswith("ITEM: BOX BOUNDS"):
+                    box = np.array([[float(x) for x in lines[i + k].split()] for k in (1, 2, 3)])
+                    i += 4
+                elif line.startswith("ITEM: " + item):
+                    names = line.split()[2:]
+                    i += 1
+                    break
+                elif line.startswith("ITEM: TIMESTEP"):
+                    raise ValueError("%s: frame at step %d has no 'ITEM: %s' table" % (p, timestep, item))
+                else:
+                    i += 1
+            if names is None or count is None:
+                raise ValueError("%s: truncated frame at step %d" % (p, timestep))
+            rows = lines[i:i + count]
+            if len(rows) < count:
+                raise ValueError("%s: frame at step %d has %d of %d rows" % (p, timestep, len(rows), count))
+            i += count
+            toks = [r.split() for r in rows]
+            cols = {}
+            for j, name in enumerate(names):
+                cols[name] = _convert_column([t[j] for t in toks])
+            frames.append(DumpFrame(timestep, cols, box))
+    frames.sort(key=lambda fr: fr.timestep)
+    return frames
+
+
+def read_dump(path, sort_by_id=True):
+    """Frames of a text 'dump custom' (or atom) file: a list of DumpFrame(timestep,
+    {column: numpy array}, box), box as an array [[xlo, xhi(, xy)], [ylo, yhi(, xz)],
+    [zlo, zhi(, yz)]]. Rows are sorted by the 'id' column when there is one (the order in the
+    file depends on the processors). path may be gzipped (.gz) or a glob pattern (one file per
+    step, 'dump.*.txt')."""
+    frames = _read_frames(path, "ATOMS")
+    if sort_by_id:
+        for fr in frames:
+            if "id" in fr.columns and len(fr.columns["id"]):
+                order = np.argsort(fr.columns["id"], kind="stable")
+                for k in fr.columns:
+                    fr.columns[k] = fr.columns[k][order]
+    return frames
+
+
+def read_dump_local(path):
+    """Frames of a text 'dump local' file: same shape as read_dump, with the columns of
+    'ITEM: ENTRIES ...' (in file order)."""
+    return _read_frames(path, "ENTRIES")
+
+
+# ----------------------------------------------------------------------------------- scripts
+
+def test_args(description=None, argv=None):
+    """Command line of a deck test, as registered by hardcontact_deck_test() in
+    tests/CMakeLists.txt: --lmp <exe> --np <N> --workdir <dir> (plus --timeout)."""
+    p = argparse.ArgumentParser(description=description)
+    p.add_argument("--lmp", default=str(_REPO / "build" / "lmp_hardcontact"),
+                   help="LAMMPS executable with fix hardcontact (default: build/lmp_hardcontact)")
+    p.add_argument("--np", type=int, default=1, help="MPI ranks (default 1: no mpirun)")
+    p.add_argument("--workdir", default=None,
+                   help="where the decks run (default: build/tests/work/<script name>)")
+    p.add_argument("--timeout", type=float, default=DEFAULT_TIMEOUT, help="seconds per LAMMPS run")
+    a = p.parse_args(argv)
+    if a.workdir is None:
+        a.workdir = str(_REPO / "build" / "tests" / "work" / Path(sys.argv[0]).stem)
+    fresh_workdir(a.workdir)
+    return a
+
+
+def fresh_workdir(path):
+    """Empty a work directory from an earlier run (only one that run_deck created, or an empty
+    one) and create it."""
+    path = Path(path)
+    if path.exists():
+        if (path / _MARKER).exists():
+            shutil.rmtree(str(path))
+        elif any(path.iterdir()):
+            raise LammpsRunError("refusing to clear %s: not a lammps_run work directory" % path)
+    path.mkdir(parents=True, exist_ok=True)
+    (path / _MARKER).touch()
+    return path
+
+
+def check(condition, message):
+    """assert that survives python -O; message says what should hold."""
+    if not condition:
+        raise AssertionError(message)
+    print("ok:", message)
+
+
+def main(test):
+    """Run test() and turn the outcome into an exit status with a short report."""
+    try:
+        test()
+    except (AssertionError, LammpsRunError) as e:
+        print("FAIL: %s" % e, file=sys.stderr)
+        sys.exit(1)
+    print("PASS")
