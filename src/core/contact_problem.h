@@ -1,0 +1,61 @@
+// The contact problem of one time step of scheme (S): everything the projection of eq. 14-15
+// needs, as flat arrays (structure of arrays), with no knowledge of the host code.
+#pragma once
+
+#include <Eigen/Core>
+#include <vector>
+
+namespace hardcontact {
+
+using Vec3 = Eigen::Vector3d;
+static_assert(sizeof(Vec3) == 3 * sizeof(double), "Vec3 arrays are exchanged as raw doubles");
+
+// Bodies 0..n_owned-1 are integrated here; bodies n_owned..n_bodies()-1 are copies owned
+// elsewhere (ghosts): their velocities arrive through DistributedOps::forward.
+// inv_mass = 0 marks a body whose velocity the contacts cannot change (an obstacle).
+//
+// Row c couples body i[c] with body j[c] (j = -1 for a wall). With unit normal n pointing from
+// i towards j (towards the wall), the linearised non-overlap constraint of eq. 15 reads
+//   g_c(u) = gap_c + h n_c . (u_j - u_i) >= 0        (u_wall = 0),
+// i.e. D_ij(q^n) + h G_ij(q^n) . u >= 0 with G_ij = grad D_ij (eq. 1).
+struct ContactProblem {
+  double h = 0.0;    // time step
+  int n_owned = 0;
+  std::vector<double> inv_mass;    // per body
+  std::vector<Vec3> u_free;        // per body: u^n + h M^-1 f (eq. 14)
+
+  std::vector<int> body_i, body_j;
+  std::vector<Vec3> normal;
+  std::vector<double> gap;     // D_c(q^n), distance units
+  std::vector<double> size;    // r_i + r_j (r_i for a wall): the scale of the tolerance
+
+  int n_bodies() const { return static_cast<int>(inv_mass.size()); }
+  int n_contacts() const { return static_cast<int>(body_i.size()); }
+
+  void clear_contacts()
+  {
+    body_i.clear();
+    body_j.clear();
+    normal.clear();
+    gap.clear();
+    size.clear();
+  }
+  void add_contact(int i, int j, const Vec3 &n, double d, double s)
+  {
+    body_i.push_back(i);
+    body_j.push_back(j);
+    normal.push_back(n);
+    gap.push_back(d);
+    size.push_back(s);
+  }
+
+  // g_c(u): the gap predicted after the step (eq. 15 left-hand side).
+  double predicted_gap(int c, const std::vector<Vec3> &u) const
+  {
+    const int j = body_j[c];
+    const Vec3 du = (j >= 0 ? u[j] : Vec3::Zero()) - u[body_i[c]];
+    return gap[c] + h * normal[c].dot(du);
+  }
+};
+
+}    // namespace hardcontact

@@ -1,0 +1,24 @@
+// What a solver needs from the host when bodies are spread over processes (DESIGN.md): the
+// host copies owned values to their ghost copies and reduces scalars over all processes.
+// The serial implementation makes the core usable and testable on its own.
+#pragma once
+
+namespace hardcontact {
+
+class DistributedOps {
+ public:
+  virtual ~DistributedOps() = default;
+  // Copy `per_body` doubles per owned body to every ghost copy of that body.
+  virtual void forward(double *data, int per_body) = 0;
+  virtual double max_all(double local) = 0;
+  virtual double sum_all(double local) = 0;
+};
+
+class SerialOps : public DistributedOps {
+ public:
+  void forward(double *, int) override {}
+  double max_all(double local) override { return local; }
+  double sum_all(double local) override { return local; }
+};
+
+}    // namespace hardcontact

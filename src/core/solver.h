@@ -1,0 +1,42 @@
+// One interface for every algorithm that projects u_free onto K_h (eq. 14-15). The scheme does
+// not depend on the solver (section 3.3): any exact solver gives the same u^{n+1}.
+#pragma once
+
+#include "contact_problem.h"
+#include "distributed_ops.h"
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace hardcontact {
+
+struct SolverSettings {
+  double tol = 1.0e-4;    // stop when residual() <= tol (relative to contact size)
+  int maxiter = 2000;     // cap on multiplier updates per solve
+  double rho = 0.0;       // Uzawa step; 0 = from step_size_bound() each solve
+};
+
+struct SolveReport {
+  int iterations = 0;    // multiplier updates done
+  double residual = 0.0;
+  bool converged = false;
+  double rho = 0.0;    // step actually used (0 if the solver has none)
+};
+
+class Solver {
+ public:
+  virtual ~Solver() = default;
+  // mu: multipliers (contact forces, eq. 16), in: start values (resized to the rows, missing
+  // ones 0), out: result. u: out, velocities of all bodies, ghosts included.
+  virtual SolveReport solve(const ContactProblem &p, const SolverSettings &s,
+                            DistributedOps &ops, std::vector<double> &mu,
+                            std::vector<Vec3> &u) = 0;
+};
+
+// nullptr for an unknown name.
+std::unique_ptr<Solver> make_solver(const std::string &name);
+// The names make_solver knows, for error messages and docs.
+std::vector<std::string> solver_names();
+
+}    // namespace hardcontact

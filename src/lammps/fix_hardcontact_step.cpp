@@ -1,0 +1,336 @@
+// One step of scheme (S) inside LAMMPS's Verlet loop. At initial_integrate of step n+1, LAMMPS
+// holds q^n (x, ghosts current), u^n (v) and f(q^n) (computed in step n or in setup), and the
+// neighbour list of the last build. This is exactly the data of eq. 14-19, so the whole step
+// happens here: u_free, projection onto K_h(q^n), then q^{n+1} = q^n + h u^{n+1}.
+#include "fix_hardcontact.h"
+
+#include "atom.h"
+#include "comm.h"
+#include "error.h"
+#include "force.h"
+#include "memory.h"
+#include "neigh_list.h"
+#include "neighbor.h"
+#include "update.h"
+
+#include "../core/residual.h"
+#include "../core/velocity_update.h"
+
+#include <cmath>
+
+using namespace LAMMPS_NS;
+using hardcontact::Vec3;
+
+namespace {
+const int MAX_ROUNDS = 1000;    // a safety net: each round adds rows, and there are finitely many
+const double SPHERE_INERTIA = 0.4;    // I = 0.4 m r^2, as fix nve/sphere
+}    // namespace
+
+void FixHardContact::initial_integrate(int)
+{
+  build_bodies();
+  build_pool();
+  solve();
+  fill_outputs();
+  move_and_check();
+}
+
+// Eq. 14: u_free = u^n + h M^-1 f^{n+1}, f evaluated at q^n (LAMMPS's forces of this state).
+// Atoms outside the group are obstacles: contacts do not change their velocity (inv_mass 0).
+void FixHardContact::build_bodies()
+{
+  const int nlocal = atom->nlocal;
+  const int nall = nlocal + atom->nghost;
+  double **v = atom->v, **f = atom->f;
+  double *rmass = atom->rmass;
+  int *mask = atom->mask;
+  const double dtfm = update->dt * force->ftm2v;
+
+  problem_.h = update->dt;
+  problem_.n_owned = nlocal;
+  problem_.inv_mass.resize(nall);
+  problem_.u_free.resize(nall);
+  for (int i = 0; i < nall; ++i)
+    problem_.inv_mass[i] = (mask[i] & groupbit) ? force->ftm2v / rmass[i] : 0.0;
+
+  tagint bad = 0;
+  double vmax = 0.0;
+  for (int i = 0; i < nlocal; ++i) {
+    Vec3 u(v[i]);
+    if (mask[i] & groupbit) u += (dtfm / rmass[i]) * Vec3(f[i]);
+    if (!u.allFinite() && !bad) bad = atom->tag[i];
+    if (mask[i] & groupbit) vmax = MAX(vmax, u.norm());
+    problem_.u_free[i] = u;
+  }
+  tagint bad_all;
+  MPI_Allreduce(&bad, &bad_all, 1, MPI_LMP_TAGINT, MPI_MAX, world);
+  if (bad_all)
+    error->all(FLERR, "Fix hardcontact: atom {} has a non-finite velocity or force at step {}: "
+                      "check the forces acting on it", bad_all, update->ntimestep);
+  recovery_speed_ = ops_.max_all(vmax);
+  ops_.forward(problem_.u_free.data()->data(), 3);
+}
+
+// Geometry at q^n of every listed pair that involves the group, and of the walls of owned
+// atoms. The list holds each pair with an owned atom first; a pair across processes is held by
+// both (newton off), each side pushing only its owned atom.
+void FixHardContact::build_pool()
+{
+  pool_.clear();
+  double **x = atom->x;
+  double *radius = atom->radius;
+  int *mask = atom->mask;
+  tagint *tag = atom->tag;
+
+  const int inum = list_->inum;
+  const int *ilist = list_->ilist;
+  for (int ii = 0; ii < inum; ++ii) {
+    const int i = ilist[ii];
+    const int *jlist = list_->firstneigh[i];
+    const int jnum = list_->numneigh[i];
+    for (int jj = 0; jj < jnum; ++jj) {
+      const int j = jlist[jj] & NEIGHMASK;
+      if (!(mask[i] & groupbit) && !(mask[j] & groupbit)) continue;
+      if (tag[i] == tag[j]) continue;    // a sphere and its own periodic image
+      const Vec3 d = Vec3(x[j]) - Vec3(x[i]);
+      const double r = d.norm();
+      Vec3 n;
+      if (r > 0.0) {
+        n = d / r;
+      } else {
+        // Coincident centres: any unit vector is a valid G (subgradient); both processes
+        // holding the pair must pick the same one, so orient it by atom ID.
+        n = Vec3::UnitX() * (tag[i] < tag[j] ? 1.0 : -1.0);
+      }
+      pool_.i.push_back(i);
+      pool_.j.push_back(j);
+      pool_.n.push_back(n);
+      pool_.gap.push_back(r - radius[i] - radius[j]);
+      pool_.size.push_back(radius[i] + radius[j]);
+    }
+  }
+  const int nlocal = atom->nlocal;
+  for (int i = 0; i < nlocal; ++i) {
+    if (!(mask[i] & groupbit)) continue;
+    for (int w = 0; w < static_cast<int>(walls_.size()); ++w) {
+      pool_.i.push_back(i);
+      pool_.j.push_back(-1 - w);
+      pool_.n.push_back(walls_[w].normal());
+      pool_.gap.push_back(walls_[w].gap(x[i], radius[i]));
+      pool_.size.push_back(radius[i]);
+    }
+  }
+  pool_.row.assign(pool_.i.size(), -1);
+}
+
+// Remark 7: only contacts that can close within the step need a row. First pass: a pool entry
+// is a row if the free relative speed |u_j - u_i| could close its gap. Later passes (after a
+// solve): every entry whose constraint the solution violates becomes a row. The final u then
+// satisfies eq. 15 for every pool entry, rows or not, so it is the projection onto all of them.
+// Returns whether any process added a row.
+bool FixHardContact::select_rows(bool first)
+{
+  const double h = problem_.h;
+  const std::vector<Vec3> &uu = first ? problem_.u_free : u_;
+  int added = 0;
+  const int np = static_cast<int>(pool_.i.size());
+  for (int p = 0; p < np; ++p) {
+    if (pool_.row[p] >= 0) continue;
+    const int i = pool_.i[p], j = pool_.j[p];
+    const Vec3 uj = j >= 0 ? uu[j] : Vec3::Zero();
+    bool take;
+    if (first) {
+      take = pool_.gap[p] <= h * (uj.norm() + uu[i].norm());
+    } else {
+      const double g = pool_.gap[p] + h * pool_.n[p].dot(uj - uu[i]);
+      take = hardcontact::row_violation(g, 0.0, pool_.size[p]) > settings_.tol;
+    }
+    if (!take) continue;
+    // Overlap policy: a pair overlapping at q^n (D < 0) is asked to separate no faster than
+    // the fastest free velocity of the group, so clearing it cannot create energy beyond the
+    // scene's own scale. For D >= 0, the normal case, this is eq. 15 unchanged.
+    const double gap = MAX(pool_.gap[p], -h * recovery_speed_);
+    pool_.row[p] = problem_.n_contacts();
+    problem_.add_contact(i, j >= 0 ? j : -1, pool_.n[p], gap, pool_.size[p]);
+    ++added;
+  }
+  return ops_.sum_all(added) > 0.0;
+}
+
+void FixHardContact::solve()
+{
+  problem_.clear_contacts();
+  mu_.clear();
+  select_rows(true);
+  hardcontact::SolveReport report;
+  int iterations = 0;
+  int rounds = 0;
+  for (;;) {
+    report = solver_->solve(problem_, settings_, ops_, mu_, u_);    // from the mu found so far
+    iterations += report.iterations;
+    ++rounds;
+    if (!select_rows(false)) break;
+    if (rounds == MAX_ROUNDS) {
+      report.converged = false;
+      break;
+    }
+  }
+  if (!report.converged) {
+    ++maxiter_hits_;
+    ++maxiter_hits_run_;
+    if (maxiter_hits_run_ == 1 && comm->me == 0)
+      error->warning(FLERR, "Fix hardcontact: the solve of step {} stopped at maxiter {} with "
+                            "residual {:.3g} > tol {:.3g}; overlaps up to that size may remain. "
+                            "Raise maxiter or tol (counted in f_{}[{}]; reported once per run)",
+                     update->ntimestep + 1, settings_.maxiter, report.residual, settings_.tol,
+                     id, MAXITER_HITS + 1);
+  }
+  diag_[ITERATIONS] = iterations;
+  diag_[RESIDUAL] = report.residual;
+  diag_[RHO] = report.rho;
+  diag_[ROUNDS] = rounds;
+  diag_[MAXITER_HITS] = static_cast<double>(maxiter_hits_);
+}
+
+// A row is counted once over all processes: a pair across processes is held by both, and
+// counted by the side whose atom has the smaller ID.
+bool FixHardContact::counted_here(int c) const
+{
+  const int j = problem_.body_j[c];
+  return j < 0 || j < atom->nlocal || atom->tag[problem_.body_i[c]] < atom->tag[j];
+}
+
+void FixHardContact::fill_outputs()
+{
+  const int nlocal = atom->nlocal;
+  const int nc = problem_.n_contacts();
+  hardcontact::contact_forces(problem_, mu_, force_);
+
+  for (int i = 0; i < nlocal; ++i) {
+    array_atom[i][0] = 0.0;
+    for (int k = 0; k < 3; ++k) array_atom[i][k + 1] = force_[i][k];
+  }
+  double counts[2] = {0.0, 0.0};    // rows, active rows
+  int nrows = 0;
+  for (int c = 0; c < nc; ++c) {
+    const int i = problem_.body_i[c], j = problem_.body_j[c];
+    const bool here = counted_here(c);
+    if (here) counts[0] += 1.0;
+    if (mu_[c] <= 0.0) continue;
+    if (i < nlocal) array_atom[i][0] += 1.0;
+    if (j >= 0 && j < nlocal) array_atom[j][0] += 1.0;
+    if (here) {
+      counts[1] += 1.0;
+      ++nrows;
+    }
+  }
+  double all[2];
+  MPI_Allreduce(counts, all, 2, MPI_DOUBLE, MPI_SUM, world);
+  diag_[CANDIDATES] = all[0];
+  diag_[ACTIVE] = all[1];
+
+  if (nrows > nlocal_rows_max_) {
+    nlocal_rows_max_ = nrows;
+    memory->destroy(array_local);
+    memory->create(array_local, nlocal_rows_max_, size_local_cols, "hardcontact:array_local");
+  }
+  size_local_rows = nrows;
+  int m = 0;
+  for (int p = 0; p < static_cast<int>(pool_.i.size()); ++p) {
+    const int c = pool_.row[p];
+    if (c < 0 || mu_[c] <= 0.0 || !counted_here(c)) continue;
+    const int j = pool_.j[p];
+    double *row = array_local[m++];
+    row[0] = atom->tag[pool_.i[p]];
+    row[1] = j >= 0 ? atom->tag[j] : 0;
+    row[2] = mu_[c];
+    for (int k = 0; k < 3; ++k) row[3 + k] = pool_.n[p][k];
+    row[6] = j >= 0 ? 0 : -j;    // wall number in the order of the fix command, 0 for a pair
+  }
+}
+
+// Eq. 19, plus the guarantee that no contact was missed: a pair absent from the list was at
+// least r_i + r_j + skin apart at the last build; while no atom has moved more than skin/2
+// since, it cannot overlap. A rebuild is forced as soon as the next step could break that.
+void FixHardContact::move_and_check()
+{
+  const int nlocal = atom->nlocal;
+  double **x = atom->x, **v = atom->v, **omega = atom->omega, **torque = atom->torque;
+  double *rmass = atom->rmass, *radius = atom->radius;
+  int *mask = atom->mask;
+  const double dt = update->dt;
+  const double dtfrot = dt * force->ftm2v / SPHERE_INERTIA;
+
+  overlap_diagnostics(dt);
+
+  double worst[2] = {0.0, 0.0};    // displacement since the build, same plus one more step
+  double step_max = 0.0;
+  for (int i = 0; i < nlocal; ++i) {
+    if (!(mask[i] & groupbit)) continue;
+    for (int k = 0; k < 3; ++k) {
+      v[i][k] = u_[i][k];
+      x[i][k] += dt * u_[i][k];
+    }
+    // Frictionless contacts exert no torque: spins change only by external torques.
+    if (omega && torque) {
+      const double s = dtfrot / (rmass[i] * radius[i] * radius[i]);
+      for (int k = 0; k < 3; ++k) omega[i][k] += s * torque[i][k];
+    }
+    const double step = dt * u_[i].norm();
+    const double disp = (Vec3(x[i]) - xhold_[i]).norm();
+    step_max = MAX(step_max, step);
+    worst[0] = MAX(worst[0], disp);
+    worst[1] = MAX(worst[1], disp + step);
+  }
+  double all[2];
+  MPI_Allreduce(worst, all, 2, MPI_DOUBLE, MPI_MAX, world);
+  const double step_all = ops_.max_all(step_max);
+  const double half_skin = 0.5 * neighbor->skin;
+  if (all[0] > half_skin)
+    error->all(FLERR, "Fix hardcontact: at step {} an atom moved {:.6g} since the last neighbor "
+                      "list build, more than half the skin ({:.6g}), so a contact may have been "
+                      "missed. The largest move in one step was {:.6g}: use 'neighbor {:.3g} bin' "
+                      "(4 x that) or a smaller timestep", update->ntimestep, all[0], half_skin,
+               step_all, 4.0 * step_all);
+  if (all[1] > half_skin) next_reneighbor = update->ntimestep;
+}
+
+// Largest overlap over the pool at positions q + h u (h = 0: at q), in distance units and
+// relative to the contact size. A pair outside the pool cannot overlap (see move_and_check).
+void FixHardContact::overlap_diagnostics(double h)
+{
+  double **x = atom->x;
+  double *radius = atom->radius;
+  const bool moving = h > 0.0;
+  double worst[2] = {0.0, 0.0};
+  const int np = static_cast<int>(pool_.i.size());
+  for (int p = 0; p < np; ++p) {
+    const int i = pool_.i[p], j = pool_.j[p];
+    Vec3 xi(x[i]);
+    if (moving) xi += h * u_[i];
+    double d;
+    if (j >= 0) {
+      Vec3 xj(x[j]);
+      if (moving) xj += h * u_[j];
+      d = (xj - xi).norm() - radius[i] - radius[j];
+    } else {
+      d = walls_[-1 - j].gap(xi.data(), radius[i]);
+    }
+    if (d < 0.0) {
+      worst[0] = MAX(worst[0], -d);
+      worst[1] = MAX(worst[1], -d / pool_.size[p]);
+    }
+  }
+  double all[2];
+  MPI_Allreduce(worst, all, 2, MPI_DOUBLE, MPI_MAX, world);
+  diag_[MAX_OVERLAP] = all[0];
+  diag_[MAX_OVERLAP_RELATIVE] = all[1];
+}
+
+void FixHardContact::post_run()
+{
+  if (maxiter_hits_run_ > 0 && comm->me == 0)
+    error->warning(FLERR, "Fix hardcontact: {} solve(s) of this run stopped at maxiter {}",
+                   maxiter_hits_run_, settings_.maxiter);
+  maxiter_hits_run_ = 0;
+}
