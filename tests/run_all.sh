@@ -1,0 +1,16 @@
+#!/usr/bin/env bash
+# Set up (packages, LAMMPS headers), build, and run every test except the "soak" label.
+#   bash tests/run_all.sh             # all of it
+#   bash tests/run_all.sh -L unit     # extra arguments go to ctest
+# MPI tests carry the ctest PROCESSORS property (min(np, 2)): with -j2 an mpirun test never
+# shares this 2-core machine with another test.
+set -euo pipefail
+
+ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+BUILD_DIR="${HARDCONTACT_BUILD_DIR:-$ROOT/build}"
+
+bash "$ROOT/.ci/setup.sh"
+bash "$ROOT/.ci/build.sh"
+
+export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
+ctest --test-dir "$BUILD_DIR" --output-on-failure -LE soak -j "${HARDCONTACT_JOBS:-2}" "$@"
