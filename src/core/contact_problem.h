@@ -14,7 +14,7 @@ static_assert(sizeof(Vec3) == 3 * sizeof(double), "Vec3 arrays are exchanged as 
 // elsewhere (ghosts): their velocities arrive through DistributedOps::forward.
 // inv_mass = 0 marks a body whose velocity the contacts cannot change (an obstacle).
 //
-// Row c couples body i[c] with body j[c] (j = -1 for a wall). With unit normal n pointing from
+// Row c couples body i[c] with body j[c] (j < 0 for a wall; the host may encode which one). With unit normal n pointing from
 // i towards j (towards the wall), the linearised non-overlap constraint of eq. 15 reads
 //   g_c(u) = gap_c + h n_c . (u_j - u_i) >= 0        (u_wall = 0),
 // i.e. D_ij(q^n) + h G_ij(q^n) . u >= 0 with G_ij = grad D_ij (eq. 1).
@@ -28,6 +28,9 @@ struct ContactProblem {
   std::vector<Vec3> normal;
   std::vector<double> gap;     // D_c(q^n), distance units
   std::vector<double> size;    // r_i + r_j (r_i for a wall): the scale of the tolerance
+  // 1 if this process counts row c in global sums. A row coupling an owned body with a ghost
+  // is held by both processes; exactly one of them counts it.
+  std::vector<char> counted;
 
   int n_bodies() const { return static_cast<int>(inv_mass.size()); }
   int n_contacts() const { return static_cast<int>(body_i.size()); }
@@ -39,9 +42,11 @@ struct ContactProblem {
     normal.clear();
     gap.clear();
     size.clear();
+    counted.clear();
   }
-  void add_contact(int i, int j, const Vec3 &n, double d, double s)
+  void add_contact(int i, int j, const Vec3 &n, double d, double s, bool count = true)
   {
+    counted.push_back(count ? 1 : 0);
     body_i.push_back(i);
     body_j.push_back(j);
     normal.push_back(n);

@@ -12,6 +12,8 @@ class DistributedOps {
   virtual void forward(double *data, int per_body) = 0;
   virtual double max_all(double local) = 0;
   virtual double sum_all(double local) = 0;
+  // In place, n values at once (one message instead of n).
+  virtual void sum_all(double *values, int n) = 0;
 };
 
 class SerialOps : public DistributedOps {
@@ -19,6 +21,7 @@ class SerialOps : public DistributedOps {
   void forward(double *, int) override {}
   double max_all(double local) override { return local; }
   double sum_all(double local) override { return local; }
+  void sum_all(double *, int) override {}
 };
 
 }    // namespace hardcontact

@@ -1,5 +1,6 @@
 // The `solver` keyword's table: adding an algorithm is adding a line here and a file.
 #include "solver.h"
+#include "apgd.h"
 #include "uzawa.h"
 
 namespace hardcontact {
@@ -11,6 +12,7 @@ struct Entry {
 };
 const Entry registry[] = {
     {"uzawa", [] { return std::unique_ptr<Solver>(new Uzawa()); }},
+    {"apgd", [] { return std::unique_ptr<Solver>(new Apgd()); }},
 };
 }    // namespace
 

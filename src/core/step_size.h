@@ -4,6 +4,8 @@
 #include "contact_problem.h"
 #include "distributed_ops.h"
 
+#include <vector>
+
 namespace hardcontact {
 
 // An upper bound L of the largest eigenvalue of A = h^2 G M^-1 G^T (the dual operator
@@ -13,5 +15,8 @@ namespace hardcontact {
 // and kappa rows per body it is 2 kappa h^2 / m. Uzawa converges for 0 < rho < 2 / L.
 // Global over processes; 0 when there is no row.
 double dual_operator_bound(const ContactProblem &p, DistributedOps &ops);
+// Same for the principal submatrix of the listed rows (a solver's working set).
+double dual_operator_bound(const ContactProblem &p, const std::vector<int> &rows,
+                           DistributedOps &ops);
 
 }    // namespace hardcontact

@@ -14,35 +14,49 @@ SolveReport Uzawa::solve(const ContactProblem &p, const SolverSettings &s, Distr
   const int nc = p.n_contacts();
   mu.resize(nc, 0.0);
   next_.resize(nc);
+  set_.init(p, mu);
 
   SolveReport report;
   // rho = 1/L: inside (0, 2/L) with margin, and the exact one-step answer for an isolated pair.
-  if (s.rho > 0.0) {
-    report.rho = s.rho;
-  } else {
-    const double bound = dual_operator_bound(p, ops);
-    report.rho = bound > 0.0 ? 1.0 / bound : 0.0;
-  }
+  auto choose_rho = [&] {
+    if (s.rho > 0.0) return s.rho;
+    const double bound = dual_operator_bound(p, set_.rows(), ops);
+    return bound > 0.0 ? 1.0 / bound : 0.0;
+  };
+  report.rho = choose_rho();
 
-  velocities_from_multipliers(p, mu, u, ops);
+  velocities_from_multipliers(p, set_.rows(), mu, u, ops);
+  int next_check = 1;    // the set is checked at iterations 1, 2, 4, ..., then every 64, and at convergence
   for (int k = 0;; ++k) {
     // With C = -h G: mu_{k+1} = max(0, mu_k + rho (C u_k - D)) = max(0, mu_k - rho g(u_k)).
     double r = 0.0;
-    for (int c = 0; c < nc; ++c) {
+    for (const int c : set_.rows()) {
       const double g = p.predicted_gap(c, u);
       r = std::max(r, row_violation(g, mu[c], p.size[c]));
       next_[c] = std::max(0.0, mu[c] - report.rho * g);
     }
     report.residual = ops.max_all(r);
     report.iterations = k;
-    if (report.residual <= s.tol) {
-      report.converged = true;
-      break;
+    if (report.residual <= s.tol || k == next_check) {
+      if (k == next_check) next_check += std::min(next_check, 64);
+      if (ops.sum_all(set_.expand(p, u, s.tol)) > 0.0) {
+        // New rows start at mu = 0 and enter the update from the next pass (with a new step:
+        // the bound holds for the working set only).
+        report.rho = choose_rho();
+        if (k >= s.maxiter) break;
+        continue;
+      }
+      if (report.residual <= s.tol) {
+        report.converged = true;
+        break;
+      }
     }
     if (k >= s.maxiter) break;
-    mu.swap(next_);
-    velocities_from_multipliers(p, mu, u, ops);    // u_{k+1} from mu_{k+1} (eq. 16)
+    for (const int c : set_.rows()) mu[c] = next_[c];
+    velocities_from_multipliers(p, set_.rows(), mu, u, ops);    // u_{k+1} from mu_{k+1} (eq. 16)
   }
+  // An unconverged answer reports its violation over every row, inside the working set or not.
+  if (!report.converged) report.residual = residual(p, mu, u, ops);
   return report;
 }
 

@@ -1,7 +1,9 @@
-// The paper's algorithm (section 3.3): projected gradient ascent on the dual of eq. 15.
+// The paper's algorithm (section 3.3): projected gradient ascent on the dual of eq. 15,
+// iterating on a working set of rows (Remark 7, working_set.h).
 #pragma once
 
 #include "solver.h"
+#include "working_set.h"
 
 namespace hardcontact {
 
@@ -11,6 +13,7 @@ class Uzawa : public Solver {
                     std::vector<double> &mu, std::vector<Vec3> &u) override;
 
  private:
+  WorkingSet set_;
   std::vector<double> next_;    // kept between solves: no allocation per step
 };
 

@@ -30,16 +30,6 @@ std::string joined(const std::vector<std::string> &names)
 
 }    // namespace
 
-void FixHardContact::Pool::clear()
-{
-  i.clear();
-  j.clear();
-  n.clear();
-  gap.clear();
-  size.clear();
-  row.clear();
-}
-
 FixHardContact::FixHardContact(LAMMPS *lmp, int narg, char **arg) :
     Fix(lmp, narg, arg), solver_name_("uzawa")
 {
@@ -248,7 +238,7 @@ void FixHardContact::setup(int)
 {
   check_atoms();
   build_bodies();
-  build_pool();
+  build_candidates(0.0);
   overlap_diagnostics(0.0);
   diag_[ITERATIONS] = diag_[CANDIDATES] = diag_[ACTIVE] = diag_[RESIDUAL] = 0.0;
   diag_[RHO] = diag_[ROUNDS] = 0.0;
@@ -307,7 +297,6 @@ double FixHardContact::memory_usage()
 {
   double bytes = 4.0 * sizeof(double) * atom->nmax;
   bytes += 7.0 * sizeof(double) * nlocal_rows_max_;
-  bytes += (sizeof(int) * 3 + sizeof(double) * 5) * pool_.i.capacity();
   bytes += (sizeof(int) * 2 + sizeof(double) * 6) * problem_.body_i.capacity();
   bytes += sizeof(double) * 7 * problem_.inv_mass.capacity();
   return bytes;

@@ -47,15 +47,6 @@ class FixHardContact : public Fix {
   hardcontact::LammpsOps ops_;
   class NeighList *list_ = nullptr;
 
-  // Every pair and wall the step may need (the neighbour list's pairs near enough to matter,
-  // walls of owned atoms), with its geometry at q^n. Rows of the solve are a subset (Remark 7).
-  struct Pool {
-    std::vector<int> i, j;              // j = -1 - wall index for a wall
-    std::vector<hardcontact::Vec3> n;    // unit normal from i towards j (or the wall)
-    std::vector<double> gap, size;
-    std::vector<int> row;                // row in problem_, -1 if not a row
-    void clear();
-  } pool_;
   hardcontact::ContactProblem problem_;
   std::vector<double> mu_;
   std::vector<hardcontact::Vec3> u_;
@@ -81,9 +72,12 @@ class FixHardContact : public Fix {
   void check_walls_in_box();
   void check_atoms();
   void store_xhold();
-  void build_pool();
   void build_bodies();
-  bool select_rows(bool first);
+  void build_candidates(double scale);
+  bool add_missed_rows();
+  void add_row(int i, int j, const hardcontact::Vec3 &n, double d, double size);
+  template <class F> void visit_pairs(F &&f);
+  template <class F> void visit_walls(F &&f);
   void solve();
   void move_and_check();
   void overlap_diagnostics(double h);

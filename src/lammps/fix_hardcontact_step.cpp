@@ -29,7 +29,6 @@ const double SPHERE_INERTIA = 0.4;    // I = 0.4 m r^2, as fix nve/sphere
 void FixHardContact::initial_integrate(int)
 {
   build_bodies();
-  build_pool();
   solve();
   fill_outputs();
   move_and_check();
@@ -71,17 +70,66 @@ void FixHardContact::build_bodies()
   ops_.forward(problem_.u_free.data()->data(), 3);
 }
 
-// Geometry at q^n of every listed pair that involves the group, and of the walls of owned
-// atoms. The list holds each pair with an owned atom first; a pair across processes is held by
-// both (newton off), each side pushing only its owned atom.
-void FixHardContact::build_pool()
+// Candidate rows (Remark 7): a listed pair, or a wall of an owned atom, whose gap at q^n the
+// free speeds could close within the step, D <= h (|u_i| + |u_j|) (scale 1), or that overlaps
+// (scale 0, for the diagnostics of step 0). The list holds each pair with an owned atom first;
+// a pair across processes is held by both (newton off), each side pushing only its own atom.
+// Returns the pairs and walls left out, for missed_rows().
+void FixHardContact::build_candidates(double scale)
 {
-  pool_.clear();
+  problem_.clear_contacts();
+  const double h = problem_.h;
+  const std::vector<Vec3> &uf = problem_.u_free;
+  visit_pairs([&](int i, int j, const Vec3 &n, double d, double size) {
+    if (d <= scale * h * (uf[i].norm() + uf[j].norm())) add_row(i, j, n, d, size);
+  });
+  visit_walls([&](int i, int w, double d) {
+    if (d <= scale * h * uf[i].norm())
+      add_row(i, -1 - w, walls_[w].normal(), d, atom->radius[i]);
+  });
+}
+
+// After a solve: a pair outside the candidates may still be violated when a speed grew above
+// its free value (a light sphere struck by a heavy one). Such pairs become rows and the solve
+// goes on; then u satisfies eq. 15 for every listed pair. Returns whether any process added.
+bool FixHardContact::add_missed_rows()
+{
+  const double h = problem_.h;
+  const std::vector<Vec3> &uf = problem_.u_free;
+  const double tol = settings_.tol;
+  int added = 0;
+  visit_pairs([&](int i, int j, const Vec3 &n, double d, double size) {
+    if (d <= h * (uf[i].norm() + uf[j].norm())) return;    // a candidate already
+    const double g = d + h * n.dot(u_[j] - u_[i]);
+    if (hardcontact::row_violation(g, 0.0, size) <= tol) return;
+    add_row(i, j, n, d, size);
+    ++added;
+  });
+  visit_walls([&](int i, int w, double d) {
+    if (d <= h * uf[i].norm()) return;
+    const double g = d - h * walls_[w].normal().dot(u_[i]);
+    if (hardcontact::row_violation(g, 0.0, atom->radius[i]) <= tol) return;
+    add_row(i, -1 - w, walls_[w].normal(), d, atom->radius[i]);
+    ++added;
+  });
+  return ops_.sum_all(added) > 0.0;
+}
+
+void FixHardContact::add_row(int i, int j, const Vec3 &n, double d, double size)
+{
+  // Overlap policy: a pair overlapping at q^n (D < 0) is asked to separate no faster than
+  // the fastest free velocity of the group, so clearing it cannot create energy beyond the
+  // scene's own scale. For D >= 0, the normal case, this is eq. 15 unchanged.
+  const bool counted = j < 0 || j < atom->nlocal || atom->tag[i] < atom->tag[j];
+  problem_.add_contact(i, j, n, MAX(d, -problem_.h * recovery_speed_), size, counted);
+}
+
+template <class F> void FixHardContact::visit_pairs(F &&f)
+{
   double **x = atom->x;
   double *radius = atom->radius;
   int *mask = atom->mask;
   tagint *tag = atom->tag;
-
   const int inum = list_->inum;
   const int *ilist = list_->ilist;
   for (int ii = 0; ii < inum; ++ii) {
@@ -92,76 +140,32 @@ void FixHardContact::build_pool()
       const int j = jlist[jj] & NEIGHMASK;
       if (!(mask[i] & groupbit) && !(mask[j] & groupbit)) continue;
       if (tag[i] == tag[j]) continue;    // a sphere and its own periodic image
-      const Vec3 d = Vec3(x[j]) - Vec3(x[i]);
-      const double r = d.norm();
-      Vec3 n;
-      if (r > 0.0) {
-        n = d / r;
-      } else {
-        // Coincident centres: any unit vector is a valid G (subgradient); both processes
-        // holding the pair must pick the same one, so orient it by atom ID.
-        n = Vec3::UnitX() * (tag[i] < tag[j] ? 1.0 : -1.0);
-      }
-      pool_.i.push_back(i);
-      pool_.j.push_back(j);
-      pool_.n.push_back(n);
-      pool_.gap.push_back(r - radius[i] - radius[j]);
-      pool_.size.push_back(radius[i] + radius[j]);
+      const Vec3 dx = Vec3(x[j]) - Vec3(x[i]);
+      const double r = dx.norm();
+      // Coincident centres: any unit vector is a valid G (subgradient); both processes
+      // holding the pair must pick the same one, so orient it by atom ID.
+      const Vec3 n = r > 0.0 ? Vec3(dx / r) : Vec3(Vec3::UnitX() * (tag[i] < tag[j] ? 1.0 : -1.0));
+      f(i, j, n, r - radius[i] - radius[j], radius[i] + radius[j]);
     }
   }
-  const int nlocal = atom->nlocal;
-  for (int i = 0; i < nlocal; ++i) {
-    if (!(mask[i] & groupbit)) continue;
-    for (int w = 0; w < static_cast<int>(walls_.size()); ++w) {
-      pool_.i.push_back(i);
-      pool_.j.push_back(-1 - w);
-      pool_.n.push_back(walls_[w].normal());
-      pool_.gap.push_back(walls_[w].gap(x[i], radius[i]));
-      pool_.size.push_back(radius[i]);
-    }
-  }
-  pool_.row.assign(pool_.i.size(), -1);
 }
 
-// Remark 7: only contacts that can close within the step need a row. First pass: a pool entry
-// is a row if the free relative speed |u_j - u_i| could close its gap. Later passes (after a
-// solve): every entry whose constraint the solution violates becomes a row. The final u then
-// satisfies eq. 15 for every pool entry, rows or not, so it is the projection onto all of them.
-// Returns whether any process added a row.
-bool FixHardContact::select_rows(bool first)
+template <class F> void FixHardContact::visit_walls(F &&f)
 {
-  const double h = problem_.h;
-  const std::vector<Vec3> &uu = first ? problem_.u_free : u_;
-  int added = 0;
-  const int np = static_cast<int>(pool_.i.size());
-  for (int p = 0; p < np; ++p) {
-    if (pool_.row[p] >= 0) continue;
-    const int i = pool_.i[p], j = pool_.j[p];
-    const Vec3 uj = j >= 0 ? uu[j] : Vec3::Zero();
-    bool take;
-    if (first) {
-      take = pool_.gap[p] <= h * (uj.norm() + uu[i].norm());
-    } else {
-      const double g = pool_.gap[p] + h * pool_.n[p].dot(uj - uu[i]);
-      take = hardcontact::row_violation(g, 0.0, pool_.size[p]) > settings_.tol;
-    }
-    if (!take) continue;
-    // Overlap policy: a pair overlapping at q^n (D < 0) is asked to separate no faster than
-    // the fastest free velocity of the group, so clearing it cannot create energy beyond the
-    // scene's own scale. For D >= 0, the normal case, this is eq. 15 unchanged.
-    const double gap = MAX(pool_.gap[p], -h * recovery_speed_);
-    pool_.row[p] = problem_.n_contacts();
-    problem_.add_contact(i, j >= 0 ? j : -1, pool_.n[p], gap, pool_.size[p]);
-    ++added;
+  const int nw = static_cast<int>(walls_.size());
+  if (nw == 0) return;
+  double **x = atom->x;
+  int *mask = atom->mask;
+  for (int i = 0; i < atom->nlocal; ++i) {
+    if (!(mask[i] & groupbit)) continue;
+    for (int w = 0; w < nw; ++w) f(i, w, walls_[w].gap(x[i], atom->radius[i]));
   }
-  return ops_.sum_all(added) > 0.0;
 }
 
 void FixHardContact::solve()
 {
-  problem_.clear_contacts();
+  build_candidates(1.0);
   mu_.clear();
-  select_rows(true);
   hardcontact::SolveReport report;
   int iterations = 0;
   int rounds = 0;
@@ -169,7 +173,7 @@ void FixHardContact::solve()
     report = solver_->solve(problem_, settings_, ops_, mu_, u_);    // from the mu found so far
     iterations += report.iterations;
     ++rounds;
-    if (!select_rows(false)) break;
+    if (!add_missed_rows()) break;
     if (rounds == MAX_ROUNDS) {
       report.converged = false;
       break;
@@ -196,8 +200,7 @@ void FixHardContact::solve()
 // counted by the side whose atom has the smaller ID.
 bool FixHardContact::counted_here(int c) const
 {
-  const int j = problem_.body_j[c];
-  return j < 0 || j < atom->nlocal || atom->tag[problem_.body_i[c]] < atom->tag[j];
+  return problem_.counted[c] != 0;
 }
 
 void FixHardContact::fill_outputs()
@@ -236,15 +239,14 @@ void FixHardContact::fill_outputs()
   }
   size_local_rows = nrows;
   int m = 0;
-  for (int p = 0; p < static_cast<int>(pool_.i.size()); ++p) {
-    const int c = pool_.row[p];
-    if (c < 0 || mu_[c] <= 0.0 || !counted_here(c)) continue;
-    const int j = pool_.j[p];
+  for (int c = 0; c < nc; ++c) {
+    if (mu_[c] <= 0.0 || !counted_here(c)) continue;
+    const int j = problem_.body_j[c];
     double *row = array_local[m++];
-    row[0] = atom->tag[pool_.i[p]];
+    row[0] = atom->tag[problem_.body_i[c]];
     row[1] = j >= 0 ? atom->tag[j] : 0;
     row[2] = mu_[c];
-    for (int k = 0; k < 3; ++k) row[3 + k] = pool_.n[p][k];
+    for (int k = 0; k < 3; ++k) row[3 + k] = problem_.normal[c][k];
     row[6] = j >= 0 ? 0 : -j;    // wall number in the order of the fix command, 0 for a pair
   }
 }
@@ -295,30 +297,30 @@ void FixHardContact::move_and_check()
   if (all[1] > half_skin) next_reneighbor = update->ntimestep;
 }
 
-// Largest overlap over the pool at positions q + h u (h = 0: at q), in distance units and
-// relative to the contact size. A pair outside the pool cannot overlap (see move_and_check).
+// Largest overlap over the rows at positions q + h u (h = 0: at q), in distance units and
+// relative to the contact size. Other listed pairs satisfy eq. 15 (add_missed_rows), and
+// D >= linearised gap (D is convex), so they cannot overlap beyond the tolerance either.
 void FixHardContact::overlap_diagnostics(double h)
 {
   double **x = atom->x;
   double *radius = atom->radius;
-  const bool moving = h > 0.0;
   double worst[2] = {0.0, 0.0};
-  const int np = static_cast<int>(pool_.i.size());
-  for (int p = 0; p < np; ++p) {
-    const int i = pool_.i[p], j = pool_.j[p];
+  const int nc = problem_.n_contacts();
+  for (int c = 0; c < nc; ++c) {
+    const int i = problem_.body_i[c], j = problem_.body_j[c];
     Vec3 xi(x[i]);
-    if (moving) xi += h * u_[i];
+    if (h > 0.0) xi += h * u_[i];
     double d;
     if (j >= 0) {
       Vec3 xj(x[j]);
-      if (moving) xj += h * u_[j];
+      if (h > 0.0) xj += h * u_[j];
       d = (xj - xi).norm() - radius[i] - radius[j];
     } else {
       d = walls_[-1 - j].gap(xi.data(), radius[i]);
     }
     if (d < 0.0) {
       worst[0] = MAX(worst[0], -d);
-      worst[1] = MAX(worst[1], -d / pool_.size[p]);
+      worst[1] = MAX(worst[1], -d / problem_.size[c]);
     }
   }
   double all[2];

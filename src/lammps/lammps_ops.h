@@ -35,6 +35,10 @@ class LammpsOps : public DistributedOps {
     MPI_Allreduce(&local, &global, 1, MPI_DOUBLE, MPI_SUM, world_);
     return global;
   }
+  void sum_all(double *values, int n) override
+  {
+    MPI_Allreduce(MPI_IN_PLACE, values, n, MPI_DOUBLE, MPI_SUM, world_);
+  }
 
   // Read by the fix's pack/unpack_forward_comm: what is being sent, per LAMMPS atom index.
   double *data() const { return data_; }

@@ -1,0 +1,118 @@
+#include "apgd.h"
+
+#include "residual.h"
+#include "step_size.h"
+#include "velocity_update.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace hardcontact {
+
+// The dual of eq. 15 as a minimisation over mu >= 0:
+//   phi(mu) = 1/2 mu.A mu + b.mu,  grad phi = A mu + b = g(u(mu)),  A = h^2 G M^-1 G^T,
+// so the Uzawa step of section 3.3 is projected gradient descent with step rho, and
+// phi(mu) = 1/2 mu.(g(mu) + b) costs no extra product.
+SolveReport Apgd::solve(const ContactProblem &p, const SolverSettings &s, DistributedOps &ops,
+                        std::vector<double> &mu, std::vector<Vec3> &u)
+{
+  const int nc = p.n_contacts();
+  mu.resize(nc, 0.0);
+  for (auto *v : {&b_, &g_, &y_, &gy_, &next_, &gnext_}) v->assign(nc, 0.0);
+  set_.init(p, mu);
+
+  std::vector<Vec3> &u_free_as_u = u;
+  velocities_from_multipliers(p, std::vector<int>(), mu, u_free_as_u, ops);    // u = u_free
+  for (int c = 0; c < nc; ++c) b_[c] = p.predicted_gap(c, u);
+
+  auto gaps = [&](const std::vector<double> &m, std::vector<double> &g) {
+    velocities_from_multipliers(p, set_.rows(), m, u, ops);
+    for (const int c : set_.rows()) g[c] = p.predicted_gap(c, u);
+  };
+  gaps(mu, g_);
+
+  SolveReport report;
+  // Start L below the Gershgorin bound of the working set: backtracking raises it as needed.
+  auto initial_lipschitz = [&] {
+    return s.rho > 0.0 ? 1.0 / s.rho : 0.25 * dual_operator_bound(p, set_.rows(), ops);
+  };
+  double L = initial_lipschitz();
+  double theta = 1.0;
+  auto restart = [&] {
+    theta = 1.0;
+    for (const int c : set_.rows()) {
+      y_[c] = mu[c];
+      gy_[c] = g_[c];
+    }
+  };
+  restart();
+
+  int next_check = 1;
+  const int max_check_interval = 64;
+  for (int k = 0;; ++k) {
+    double r = 0.0;
+    for (const int c : set_.rows()) r = std::max(r, row_violation(g_[c], mu[c], p.size[c]));
+    report.residual = ops.max_all(r);
+    report.iterations = k;
+    if (report.residual <= s.tol || k == next_check) {
+      if (k == next_check) next_check += std::min(next_check, max_check_interval);
+      if (ops.sum_all(set_.expand(p, u, s.tol)) > 0.0) {
+        for (const int c : set_.rows()) g_[c] = p.predicted_gap(c, u);    // new rows too
+        L = std::max(L, initial_lipschitz());
+        restart();
+        if (k >= s.maxiter) break;
+        continue;
+      }
+      if (report.residual <= s.tol) {
+        report.converged = true;
+        break;
+      }
+    }
+    if (k >= s.maxiter || L <= 0.0) break;
+
+    // Projected step from y with backtracking: accept when the quadratic model with L bounds
+    // phi at the trial point (this is what makes 1/L a valid step without knowing ||A||).
+    double sums[5];
+    for (;;) {
+      for (const int c : set_.rows()) next_[c] = std::max(0.0, y_[c] - gy_[c] / L);
+      gaps(next_, gnext_);
+      // phi(y), phi(next), gy.(next - y), |next - y|^2, gy.(next - mu) - each row counted once
+      for (double &v : sums) v = 0.0;
+      for (const int c : set_.rows()) {
+        if (!p.counted[c]) continue;
+        const double d = next_[c] - y_[c];
+        sums[0] += 0.5 * y_[c] * (gy_[c] + b_[c]);
+        sums[1] += 0.5 * next_[c] * (gnext_[c] + b_[c]);
+        sums[2] += gy_[c] * d;
+        sums[3] += d * d;
+        sums[4] += gy_[c] * (next_[c] - mu[c]);
+      }
+      ops.sum_all(sums, 5);
+      const double slack = 1e-12 * (std::abs(sums[0]) + std::abs(sums[1]));
+      if (sums[1] <= sums[0] + sums[2] + 0.5 * L * sums[3] + slack) break;
+      L *= 2.0;
+    }
+
+    // Nesterov momentum, dropped when it points uphill (gradient restart).
+    double theta_next = 0.5 * (1.0 + std::sqrt(1.0 + 4.0 * theta * theta));
+    double beta = (theta - 1.0) / theta_next;
+    if (sums[4] > 0.0) {
+      theta_next = 1.0;
+      beta = 0.0;
+    }
+    for (const int c : set_.rows()) {
+      y_[c] = next_[c] + beta * (next_[c] - mu[c]);
+      gy_[c] = gnext_[c] + beta * (gnext_[c] - g_[c]);
+      mu[c] = next_[c];
+      g_[c] = gnext_[c];
+    }
+    theta = theta_next;
+    L *= 0.9;    // let the estimate come back down where the problem is softer
+  }
+  report.rho = L > 0.0 ? 1.0 / L : 0.0;
+  // An unconverged answer reports its violation over every row, inside the working set or not.
+  if (!report.converged) report.residual = residual(p, mu, u, ops);
+  return report;
+}
+
+}    // namespace hardcontact

@@ -1,0 +1,36 @@
+#include "working_set.h"
+
+#include "residual.h"
+
+namespace hardcontact {
+
+void WorkingSet::init(const ContactProblem &p, const std::vector<double> &mu)
+{
+  const int nc = p.n_contacts();
+  rows_.clear();
+  member_.assign(nc, 0);
+  for (int c = 0; c < nc; ++c) {
+    const int j = p.body_j[c];
+    const Vec3 du = (j >= 0 ? p.u_free[j] : Vec3::Zero()) - p.u_free[p.body_i[c]];
+    if (mu[c] > 0.0 || p.gap[c] <= p.h * du.norm()) {
+      rows_.push_back(c);
+      member_[c] = 1;
+    }
+  }
+}
+
+int WorkingSet::expand(const ContactProblem &p, const std::vector<Vec3> &u, double tol)
+{
+  int added = 0;
+  const int nc = p.n_contacts();
+  for (int c = 0; c < nc; ++c) {
+    if (member_[c]) continue;
+    if (row_violation(p.predicted_gap(c, u), 0.0, p.size[c]) <= tol) continue;
+    rows_.push_back(c);
+    member_[c] = 1;
+    ++added;
+  }
+  return added;
+}
+
+}    // namespace hardcontact
