@@ -71,6 +71,12 @@ def test():
         lr.check(len(f.columns["c_nb[1]"]) == N_ATOMS * 6 // 2,
                  "step %d: %d neighbour pairs gathered from all ranks" % (f.timestep, N_ATOMS * 3))
 
+    # an ERROR ends the run with a non-zero exit status, also under mpirun
+    bad = lr.run_deck(args.lmp, "units lj\nno_such_command 1 2\n", args.np,
+                      args.workdir + "/error", expect_error=True, timeout=args.timeout)
+    lr.check(bad.returncode != 0, "ERROR deck exits non-zero (%s)" % bad.returncode)
+    lr.check(any("Unknown command" in e for e in bad.errors), "ERROR line parsed: %s" % bad.errors)
+
 
 if __name__ == "__main__":
     lr.main(test)
