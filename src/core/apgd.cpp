@@ -57,9 +57,11 @@ SolveReport Apgd::solve(const ContactProblem &p, const SolverSettings &s, Distri
     if (report.residual <= s.tol || k == next_check) {
       if (k == next_check) next_check += std::min(next_check, max_check_interval);
       if (ops.sum_all(set_.expand(p, u, s.tol)) > 0.0) {
-        for (const int c : set_.rows()) g_[c] = p.predicted_gap(c, u);    // new rows too
-        L = std::max(L, initial_lipschitz());
-        restart();
+        // New rows enter at mu = y = 0 and the momentum of the others is kept: restarting here
+        // would turn the cascade of a large impact (rows joining a few at a time) into plain
+        // gradient steps. One extra product gives g(y) on the grown set.
+        for (const int c : set_.rows()) g_[c] = p.predicted_gap(c, u);    // u = u(mu)
+        gaps(y_, gy_);
         if (k >= s.maxiter) break;
         continue;
       }

@@ -31,7 +31,7 @@ std::string joined(const std::vector<std::string> &names)
 }    // namespace
 
 FixHardContact::FixHardContact(LAMMPS *lmp, int narg, char **arg) :
-    Fix(lmp, narg, arg), solver_name_("uzawa")
+    Fix(lmp, narg, arg), solver_name_("apgd")
 {
   if (!atom->radius_flag || !atom->rmass_flag)
     error->all(FLERR,
@@ -194,10 +194,15 @@ void FixHardContact::init()
   if (user_cutghost_ < 0.0) user_cutghost_ = comm->cutghostuser;
   comm->cutghostuser = MAX(user_cutghost_, cutoff_);
   if (force->pair == nullptr && (!neighbor->binsizeflag || binsize_set_here_)) {
-    // Without a pair style LAMMPS bins with the whole box (master cutoff 0): O(N^2) lists.
+    // Without a pair style LAMMPS bins with the whole box (master cutoff 0): O(N^2) lists,
+    // and it stops sorting atoms (memory locality). Bin as a pair style of this reach would.
     neighbor->binsizeflag = 1;
     neighbor->binsize_user = 0.5 * cutoff_;
     binsize_set_here_ = true;
+  }
+  if (force->pair == nullptr && (atom->userbinsize == 0.0 || sortbin_set_here_)) {
+    atom->userbinsize = 0.5 * cutoff_;
+    sortbin_set_here_ = true;
   }
   hardcontact::compat::request_size_list(neighbor, this, instance_me, cutoff_);
 }

@@ -56,6 +56,7 @@ class FixHardContact : public Fix {
   double rmax_ = 0.0;
   double user_cutghost_ = -1.0;
   bool binsize_set_here_ = false;
+  bool sortbin_set_here_ = false;
 
   // global vector output, see compute_vector()
   enum { ITERATIONS, MAX_OVERLAP, CANDIDATES, ACTIVE, RESIDUAL, MAXITER_HITS,
