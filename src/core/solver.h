@@ -13,7 +13,7 @@ namespace hardcontact {
 
 struct SolverSettings {
   double tol = 1.0e-4;    // stop when residual() <= tol (relative to contact size)
-  int maxiter = 2000;     // cap on multiplier updates per solve
+  int maxiter = 10000;    // cap on multiplier updates per solve
   double rho = 0.0;       // Uzawa step; 0 = from step_size_bound() each solve
 };
 
