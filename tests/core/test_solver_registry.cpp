@@ -42,7 +42,21 @@ TEST(SolverRegistry, NamesListUzawaAndEveryNameBuilds)
 {
   const std::vector<std::string> names = solver_names();
   EXPECT_NE(std::find(names.begin(), names.end(), "uzawa"), names.end());
-  for (const std::string &n : names) EXPECT_NE(make_solver(n), nullptr) << n;
+  for (const std::string &n : names) {
+    std::unique_ptr<Solver> s = make_solver(n);
+    ASSERT_NE(s, nullptr) << n;
+    // Each registered solver solves the touching pair of the first test: 1 onto 1 at rest.
+    ContactProblem p = hctest::make_problem(0.1, {1.0, 1.0}, {Vec3(1, 0, 0), Vec3(0, 0, 0)});
+    hctest::add_pair(p, 0, 1, Vec3(0, 0, 0), Vec3(2, 0, 0), 1.0, 1.0);
+    SerialOps ops;
+    SolverSettings set;
+    set.tol = 1e-12;
+    std::vector<double> mu;
+    std::vector<Vec3> u;
+    EXPECT_TRUE(s->solve(p, set, ops, mu, u).converged) << n;
+    EXPECT_NEAR(u[0].x(), 0.5, 1e-11) << n;
+    EXPECT_NEAR(u[1].x(), 0.5, 1e-11) << n;
+  }
   // Names are unique, and each call gives a fresh object.
   std::vector<std::string> sorted = names;
   std::sort(sorted.begin(), sorted.end());
