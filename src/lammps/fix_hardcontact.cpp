@@ -31,7 +31,7 @@ std::string joined(const std::vector<std::string> &names)
 }    // namespace
 
 FixHardContact::FixHardContact(LAMMPS *lmp, int narg, char **arg) :
-    Fix(lmp, narg, arg), solver_name_("apgd")
+    Fix(lmp, narg, arg), solver_name_("apgd"), warm_(memory)
 {
   if (!atom->radius_flag || !atom->rmass_flag)
     error->all(FLERR,
@@ -63,10 +63,14 @@ FixHardContact::FixHardContact(LAMMPS *lmp, int narg, char **arg) :
   comm_forward = 3;
   ops_.attach(this, comm, world);
 
+  // per-atom data (outputs, warm-start multipliers) travels with atoms and restart files
+  restart_peratom = 1;
+  maxexchange_dynamic = 1;
   array_atom = nullptr;
   array_local = nullptr;
   grow_arrays(atom->nmax);
   atom->add_callback(Atom::GROW);
+  atom->add_callback(Atom::RESTART);
   for (int i = 0; i < atom->nlocal; ++i)
     for (int k = 0; k < 4; ++k) array_atom[i][k] = 0.0;
 }
@@ -74,6 +78,7 @@ FixHardContact::FixHardContact(LAMMPS *lmp, int narg, char **arg) :
 FixHardContact::~FixHardContact()
 {
   atom->delete_callback(id, Atom::GROW);
+  atom->delete_callback(id, Atom::RESTART);
   memory->destroy(array_atom);
   memory->destroy(array_local);
 }
@@ -131,6 +136,13 @@ void FixHardContact::parse_keywords(int narg, char **arg)
         error->all(FLERR, "Fix hardcontact rho must be positive (omit it for the automatic "
                           "step), got {}", arg[iarg + 1]);
       iarg += 2;
+    } else if (keyword == "warmstart") {
+      need(1);
+      const std::string value = arg[iarg + 1];
+      if (value != "yes" && value != "no")
+        error->all(FLERR, "Fix hardcontact warmstart must be yes or no, got '{}'", value);
+      warmstart_ = value == "yes";
+      iarg += 2;
     } else if (keyword == "wall") {
       need(3);
       const std::string plane = arg[iarg + 1];
@@ -156,8 +168,8 @@ void FixHardContact::parse_keywords(int narg, char **arg)
       if (has_hi) walls_.push_back({dim, false, hi});
       iarg += 4;
     } else {
-      error->all(FLERR, "Fix hardcontact keyword '{}' is unknown: use solver, tol, maxiter, rho "
-                        "or wall", keyword);
+      error->all(FLERR, "Fix hardcontact keyword '{}' is unknown: use solver, tol, maxiter, rho, "
+                        "warmstart or wall", keyword);
     }
   }
   check_walls_in_box();
@@ -312,24 +324,53 @@ double FixHardContact::memory_usage()
 void FixHardContact::grow_arrays(int nmax)
 {
   memory->grow(array_atom, nmax, 4, "hardcontact:array_atom");
+  warm_.grow(nmax);
   nmax_ = nmax;
+  maxexchange = 4 + warm_.max_packed_size();
 }
 
 void FixHardContact::copy_arrays(int i, int j, int)
 {
   for (int k = 0; k < 4; ++k) array_atom[j][k] = array_atom[i][k];
+  warm_.copy(i, j);
 }
 
 int FixHardContact::pack_exchange(int i, double *buf)
 {
   for (int k = 0; k < 4; ++k) buf[k] = array_atom[i][k];
-  return 4;
+  return 4 + warm_.pack(i, buf + 4);
 }
 
 int FixHardContact::unpack_exchange(int nlocal, double *buf)
 {
   for (int k = 0; k < 4; ++k) array_atom[nlocal][k] = buf[k];
-  return 4;
+  return 4 + warm_.unpack(nlocal, buf + 4);
+}
+
+// Restart files hold the warm-start multipliers, so a split run starts its next solve where
+// the unsplit one would.
+int FixHardContact::pack_restart(int i, double *buf)
+{
+  buf[0] = 1 + warm_.packed_size(i);    // LAMMPS convention: own size first
+  return 1 + warm_.pack(i, buf + 1);
+}
+
+void FixHardContact::unpack_restart(int nlocal, int nth)
+{
+  double **extra = atom->extra;
+  int m = 0;
+  for (int k = 0; k < nth; ++k) m += static_cast<int>(extra[nlocal][m]);
+  warm_.unpack(nlocal, &extra[nlocal][m + 1]);
+}
+
+int FixHardContact::size_restart(int nlocal)
+{
+  return 1 + warm_.packed_size(nlocal);
+}
+
+int FixHardContact::maxsize_restart()
+{
+  return 1 + warm_.max_packed_size();
 }
 
 int FixHardContact::pack_forward_comm(int n, int *list, double *buf, int, int *)

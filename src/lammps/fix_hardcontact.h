@@ -8,6 +8,7 @@
 #include "../core/plane_wall.h"
 #include "../core/solver.h"
 #include "lammps_ops.h"
+#include "warm_start_store.h"
 
 #include <memory>
 #include <vector>
@@ -34,6 +35,10 @@ class FixHardContact : public Fix {
   void copy_arrays(int, int, int) override;
   int pack_exchange(int, double *) override;
   int unpack_exchange(int, double *) override;
+  int pack_restart(int, double *) override;
+  void unpack_restart(int, int) override;
+  int size_restart(int) override;
+  int maxsize_restart() override;
   int pack_forward_comm(int, int *, double *, int, int *) override;
   void unpack_forward_comm(int, int, double *) override;
 
@@ -42,6 +47,8 @@ class FixHardContact : public Fix {
   std::string solver_name_;
   hardcontact::SolverSettings settings_;
   std::vector<hardcontact::PlaneWall> walls_;
+  bool warmstart_ = true;
+  hardcontact::WarmStartStore warm_;
 
   std::unique_ptr<hardcontact::Solver> solver_;
   hardcontact::LammpsOps ops_;
@@ -83,7 +90,9 @@ class FixHardContact : public Fix {
   void move_and_check();
   void overlap_diagnostics(double h);
   void fill_outputs();
+  void remember_multipliers();
   bool counted_here(int c) const;
+  double partner_key(int c) const;
 };
 
 }    // namespace LAMMPS_NS

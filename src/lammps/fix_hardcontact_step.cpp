@@ -165,7 +165,11 @@ template <class F> void FixHardContact::visit_walls(F &&f)
 void FixHardContact::solve()
 {
   build_candidates(1.0);
-  mu_.clear();
+  // Warm start: each row starts from the multiplier its pair had at the last step, if any.
+  const int nc = problem_.n_contacts();
+  mu_.assign(nc, 0.0);
+  if (warmstart_)
+    for (int c = 0; c < nc; ++c) mu_[c] = warm_.find(problem_.body_i[c], partner_key(c));
   hardcontact::SolveReport report;
   int iterations = 0;
   int rounds = 0;
@@ -189,6 +193,7 @@ void FixHardContact::solve()
                      update->ntimestep + 1, settings_.maxiter, report.residual, settings_.tol,
                      id, MAXITER_HITS + 1);
   }
+  remember_multipliers();
   diag_[ITERATIONS] = iterations;
   diag_[RESIDUAL] = report.residual;
   diag_[RHO] = report.rho;
@@ -327,6 +332,28 @@ void FixHardContact::overlap_diagnostics(double h)
   MPI_Allreduce(worst, all, 2, MPI_DOUBLE, MPI_MAX, world);
   diag_[MAX_OVERLAP] = all[0];
   diag_[MAX_OVERLAP_RELATIVE] = all[1];
+}
+
+// The key under which an atom stores a row: the other atom's ID, or -(w+1) for wall w.
+double FixHardContact::partner_key(int c) const
+{
+  const int j = problem_.body_j[c];
+  return j >= 0 ? static_cast<double>(atom->tag[j]) : static_cast<double>(j);
+}
+
+void FixHardContact::remember_multipliers()
+{
+  if (!warmstart_) return;
+  const int nlocal = atom->nlocal;
+  for (int i = 0; i < nlocal; ++i) warm_.clear(i);
+  const int nc = problem_.n_contacts();
+  for (int c = 0; c < nc; ++c) {
+    if (mu_[c] <= 0.0) continue;
+    const int i = problem_.body_i[c], j = problem_.body_j[c];
+    if (i < nlocal) warm_.add(i, partner_key(c), mu_[c]);
+    if (j >= 0 && j < nlocal) warm_.add(j, static_cast<double>(atom->tag[i]), mu_[c]);
+  }
+  maxexchange = 4 + warm_.max_packed_size();
 }
 
 void FixHardContact::post_run()
