@@ -1,6 +1,7 @@
 // The `solver` keyword's table: adding an algorithm is adding a line here and a file.
 #include "solver.h"
 #include "apgd.h"
+#include "pgs.h"
 #include "uzawa.h"
 
 namespace hardcontact {
@@ -13,6 +14,7 @@ struct Entry {
 const Entry registry[] = {
     {"uzawa", [] { return std::unique_ptr<Solver>(new Uzawa()); }},
     {"apgd", [] { return std::unique_ptr<Solver>(new Apgd()); }},
+    {"pgs", [] { return std::unique_ptr<Solver>(new Pgs()); }},
 };
 }    // namespace
 

@@ -1,0 +1,29 @@
+// Projected Gauss-Seidel on the dual of eq. 15 (one row at a time, exact minimisation along
+// it), made consistent under domain decomposition by a block-Jacobi split:
+// - rows whose two bodies are owned here are swept Gauss-Seidel, each seeing the impulses of
+//   the rows before it;
+// - rows coupling an owned body with a ghost (held by both processes) are updated first in each
+//   sweep, all at once from the velocities of the last exchange, with the Gershgorin step of
+//   their row (step_size.h), so both processes compute the same multiplier and apply their half
+//   of the same impulse: momentum stays exact. The simultaneous step is a descent step because
+//   that row sum bounds the row of the dual operator.
+// Each sweep decreases the dual objective; ghost velocities are refreshed after each sweep.
+#pragma once
+
+#include "solver.h"
+#include "working_set.h"
+
+namespace hardcontact {
+
+class Pgs : public Solver {
+ public:
+  SolveReport solve(const ContactProblem &p, const SolverSettings &s, DistributedOps &ops,
+                    std::vector<double> &mu, std::vector<Vec3> &u) override;
+
+ private:
+  WorkingSet set_;
+  std::vector<double> deg_;
+  std::vector<double> dmu_;    // boundary-row steps of one sweep
+};
+
+}    // namespace hardcontact
