@@ -23,6 +23,9 @@ struct ContactProblem {
   int n_owned = 0;
   std::vector<double> inv_mass;    // per body
   std::vector<Vec3> u_free;        // per body: u^n + h M^-1 f (eq. 14)
+  // Optional, for solvers that assemble the operator (exact): owner[b] = the owned body that
+  // ghost b copies (a periodic image on this process), -1 if owned elsewhere. Empty = unknown.
+  std::vector<int> owner;
 
   std::vector<int> body_i, body_j;
   std::vector<Vec3> normal;

@@ -1,6 +1,7 @@
 // The `solver` keyword's table: adding an algorithm is adding a line here and a file.
 #include "solver.h"
 #include "apgd.h"
+#include "exact.h"
 #include "pgs.h"
 #include "uzawa.h"
 
@@ -15,6 +16,7 @@ const Entry registry[] = {
     {"uzawa", [] { return std::unique_ptr<Solver>(new Uzawa()); }},
     {"apgd", [] { return std::unique_ptr<Solver>(new Apgd()); }},
     {"pgs", [] { return std::unique_ptr<Solver>(new Pgs()); }},
+    {"exact", [] { return std::unique_ptr<Solver>(new Exact()); }},
 };
 }    // namespace
 

@@ -17,6 +17,7 @@
 #include "../core/velocity_update.h"
 
 #include <cmath>
+#include <unordered_map>
 
 using namespace LAMMPS_NS;
 using hardcontact::Vec3;
@@ -68,6 +69,18 @@ void FixHardContact::build_bodies()
                       "check the forces acting on it", bad_all, update->ntimestep);
   recovery_speed_ = ops_.max_all(vmax);
   ops_.forward(problem_.u_free.data()->data(), 3);
+
+  // The exact solver assembles the operator: on one process, ghosts are periodic images.
+  problem_.owner.clear();
+  if (solver_name_ == "exact") {
+    std::unordered_map<tagint, int> index;
+    for (int i = 0; i < nlocal; ++i) index[atom->tag[i]] = i;
+    problem_.owner.resize(nall);
+    for (int i = 0; i < nall; ++i) {
+      const auto it = index.find(atom->tag[i]);
+      problem_.owner[i] = it == index.end() ? -1 : it->second;
+    }
+  }
 }
 
 // Candidate rows (Remark 7): a listed pair, or a wall of an owned atom, whose gap at q^n the

@@ -1,0 +1,138 @@
+#include "exact.h"
+
+#include "residual.h"
+#include "velocity_update.h"
+
+#include <Eigen/SparseCholesky>
+#include <Eigen/SparseCore>
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace hardcontact {
+
+namespace {
+
+using SparseMatrix = Eigen::SparseMatrix<double>;
+
+// A = h^2 G M^-1 G^T: rows c and d sharing body k couple by h^2 w_k s_c s_d n_c.n_d, with
+// s = -1 on body i and +1 on body j (G_ij of eq. 1). Ghost copies count as their owner.
+SparseMatrix assemble(const ContactProblem &p)
+{
+  const int nc = p.n_contacts();
+  auto body_of = [&](int b) {
+    if (b < p.n_owned) return b;
+    const int o = p.owner.empty() ? -1 : p.owner[b];
+    if (o < 0) throw std::runtime_error("solver exact needs every body on one process");
+    return o;
+  };
+  std::vector<std::vector<std::pair<int, double>>> rows_of(p.n_owned);    // (row, sign)
+  for (int c = 0; c < nc; ++c) {
+    rows_of[body_of(p.body_i[c])].push_back({c, -1.0});
+    if (p.body_j[c] >= 0) rows_of[body_of(p.body_j[c])].push_back({c, 1.0});
+  }
+  std::vector<Eigen::Triplet<double>> t;
+  const double h2 = p.h * p.h;
+  for (int k = 0; k < p.n_owned; ++k) {
+    const double w = h2 * p.inv_mass[k];
+    if (w == 0.0) continue;
+    for (const auto &a : rows_of[k])
+      for (const auto &b : rows_of[k])
+        t.emplace_back(a.first, b.first, w * a.second * b.second * p.normal[a.first].dot(p.normal[b.first]));
+  }
+  SparseMatrix A(nc, nc);
+  A.setFromTriplets(t.begin(), t.end());
+  return A;
+}
+
+}    // namespace
+
+SolveReport Exact::solve(const ContactProblem &p, const SolverSettings &s, DistributedOps &ops,
+                         std::vector<double> &mu, std::vector<Vec3> &u)
+{
+  const int nc = p.n_contacts();
+  mu.assign(nc, 0.0);    // a cold start: the method is finite from mu = 0
+  SolveReport report;
+
+  const SparseMatrix A = assemble(p);
+  velocities_from_multipliers(p, std::vector<int>(), mu, u, ops);    // u = u_free
+  Eigen::VectorXd b(nc), scale(nc);
+  double diag_max = 0.0;
+  for (int c = 0; c < nc; ++c) {
+    b[c] = p.predicted_gap(c, u);
+    scale[c] = p.size[c];
+    diag_max = std::max(diag_max, A.coeff(c, c));
+  }
+  const double reg = 1e-13 * diag_max;    // keeps A_PP definite with redundant rows
+  const double kkt_tol = 1e-13;           // gap units, relative to the contact size
+
+  Eigen::VectorXd m = Eigen::VectorXd::Zero(nc);
+  std::vector<char> passive(nc, 0);
+  bool batch = true;    // add every violated row at once; one at a time if that stalls
+  double phi_prev = 0.0;
+  const int max_outer = 10 * nc + 10;
+  for (int outer = 0; outer < max_outer; ++outer) {
+    const Eigen::VectorXd grad = A * m + b;    // = predicted gaps g(mu)
+    const double phi = 0.5 * m.dot(grad + b);
+    if (outer > 0 && batch && phi >= phi_prev) batch = false;
+    phi_prev = phi;
+    int worst = -1;
+    int added = 0;
+    for (int c = 0; c < nc; ++c) {
+      if (passive[c] || grad[c] >= -kkt_tol * scale[c]) continue;
+      if (batch) {
+        passive[c] = 1;
+        ++added;
+      }
+      if (worst < 0 || grad[c] / scale[c] < grad[worst] / scale[worst]) worst = c;
+    }
+    if (worst < 0) {
+      report.converged = true;
+      break;
+    }
+    if (!batch) passive[worst] = 1;
+    report.iterations = outer + 1;
+
+    // Inner loop: solve on the passive set; step back to the boundary while a variable of the
+    // passive set would go negative (Lawson-Hanson), dropping it from the set.
+    for (int inner = 0; inner <= nc; ++inner) {
+      std::vector<int> P;
+      for (int c = 0; c < nc; ++c)
+        if (passive[c]) P.push_back(c);
+      const int np = static_cast<int>(P.size());
+      std::vector<Eigen::Triplet<double>> t;
+      for (int a = 0; a < np; ++a) {
+        t.emplace_back(a, a, reg);
+        for (SparseMatrix::InnerIterator it(A, P[a]); it; ++it) {
+          const auto pos = std::lower_bound(P.begin(), P.end(), static_cast<int>(it.row()));
+          if (pos != P.end() && *pos == it.row()) t.emplace_back(static_cast<int>(pos - P.begin()), a, it.value());
+        }
+      }
+      SparseMatrix App(np, np);
+      App.setFromTriplets(t.begin(), t.end());
+      Eigen::SimplicialLDLT<SparseMatrix> ldlt(App);
+      Eigen::VectorXd rhs(np);
+      for (int a = 0; a < np; ++a) rhs[a] = -b[P[a]];
+      const Eigen::VectorXd z = ldlt.solve(rhs);
+      if (ldlt.info() != Eigen::Success || !z.allFinite()) break;
+      double alpha = 1.0;
+      for (int a = 0; a < np; ++a)
+        if (z[a] <= 0.0) alpha = std::min(alpha, m[P[a]] / (m[P[a]] - z[a]));
+      for (int a = 0; a < np; ++a) m[P[a]] += alpha * (z[a] - m[P[a]]);
+      if (alpha >= 1.0) break;
+      for (int a = 0; a < np; ++a)
+        if (m[P[a]] <= 0.0) {
+          m[P[a]] = 0.0;
+          passive[P[a]] = 0;
+        }
+    }
+  }
+  for (int c = 0; c < nc; ++c) mu[c] = m[c];
+  velocities_from_multipliers(p, mu, u, ops);
+  report.residual = residual(p, mu, u, ops);
+  report.converged = report.converged && report.residual <= s.tol;
+  return report;
+}
+
+}    // namespace hardcontact
