@@ -66,6 +66,7 @@ FixHardContact::FixHardContact(LAMMPS *lmp, int narg, char **arg) :
   // per-atom data (outputs, warm-start multipliers) travels with atoms and restart files
   restart_peratom = 1;
   maxexchange_dynamic = 1;
+  create_attribute = 1;    // atoms created during the run (fix pour) start with no history
   array_atom = nullptr;
   array_local = nullptr;
   grow_arrays(atom->nmax);
@@ -336,6 +337,12 @@ void FixHardContact::copy_arrays(int i, int j, int)
 {
   for (int k = 0; k < 4; ++k) array_atom[j][k] = array_atom[i][k];
   warm_.copy(i, j);
+}
+
+void FixHardContact::set_arrays(int i)
+{
+  for (int k = 0; k < 4; ++k) array_atom[i][k] = 0.0;
+  warm_.clear(i);
 }
 
 int FixHardContact::pack_exchange(int i, double *buf)
