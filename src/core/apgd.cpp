@@ -21,8 +21,7 @@ SolveReport Apgd::solve(const ContactProblem &p, const SolverSettings &s, Distri
   for (auto *v : {&b_, &g_, &y_, &gy_, &next_, &gnext_}) v->assign(nc, 0.0);
   set_.init(p, mu);
 
-  std::vector<Vec3> &u_free_as_u = u;
-  velocities_from_multipliers(p, std::vector<int>(), mu, u_free_as_u, ops);    // u = u_free
+  velocities_from_multipliers(p, std::vector<int>(), mu, u, ops);    // u = u_free
   for (int c = 0; c < nc; ++c) b_[c] = p.predicted_gap(c, u);
 
   auto gaps = [&](const std::vector<double> &m, std::vector<double> &g) {
@@ -47,28 +46,24 @@ SolveReport Apgd::solve(const ContactProblem &p, const SolverSettings &s, Distri
   };
   restart();
 
-  int next_check = 1;
-  const int max_check_interval = 64;
   for (int k = 0;; ++k) {
     double r = 0.0;
     for (const int c : set_.rows()) r = std::max(r, row_violation(g_[c], mu[c], p.size[c]));
     report.residual = ops.max_all(r);
     report.iterations = k;
-    if (report.residual <= s.tol || k == next_check) {
-      if (k == next_check) next_check += std::min(next_check, max_check_interval);
-      if (ops.sum_all(set_.expand(p, u, s.tol)) > 0.0) {
-        // New rows enter at mu = y = 0 and the momentum of the others is kept: restarting here
-        // would turn the cascade of a large impact (rows joining a few at a time) into plain
-        // gradient steps. One extra product gives g(y) on the grown set.
-        for (const int c : set_.rows()) g_[c] = p.predicted_gap(c, u);    // u = u(mu)
-        gaps(y_, gy_);
-        if (k >= s.maxiter) break;
-        continue;
-      }
-      if (report.residual <= s.tol) {
-        report.converged = true;
-        break;
-      }
+    const auto verdict = set_.check(k, report.residual, s.tol, p, u, ops);
+    if (verdict == WorkingSet::Verdict::Converged) {
+      report.converged = true;
+      break;
+    }
+    if (verdict == WorkingSet::Verdict::Grown) {
+      // New rows enter at mu = y = 0 and the momentum of the others is kept: restarting here
+      // would turn the cascade of a large impact (rows joining a few at a time) into plain
+      // gradient steps. One extra product gives g(y) on the grown set.
+      for (const int c : set_.rows()) g_[c] = p.predicted_gap(c, u);    // u = u(mu)
+      gaps(y_, gy_);
+      if (k >= s.maxiter) break;
+      continue;
     }
     if (k >= s.maxiter || L <= 0.0) break;
 

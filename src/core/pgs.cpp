@@ -36,24 +36,21 @@ SolveReport Pgs::solve(const ContactProblem &p, const SolverSettings &s, Distrib
   };
 
   SolveReport report;
-  int next_check = 1;
   for (int k = 0;; ++k) {
     double r = 0.0;
     for (const int c : set_.rows())
       r = std::max(r, row_violation(p.predicted_gap(c, u), mu[c], p.size[c]));
     report.residual = ops.max_all(r);
     report.iterations = k;
-    if (report.residual <= s.tol || k == next_check) {
-      if (k == next_check) next_check += std::min(next_check, 64);
-      if (ops.sum_all(set_.expand(p, u, s.tol)) > 0.0) {
-        count_degrees();
-        if (k >= s.maxiter) break;
-        continue;
-      }
-      if (report.residual <= s.tol) {
-        report.converged = true;
-        break;
-      }
+    const auto verdict = set_.check(k, report.residual, s.tol, p, u, ops);
+    if (verdict == WorkingSet::Verdict::Converged) {
+      report.converged = true;
+      break;
+    }
+    if (verdict == WorkingSet::Verdict::Grown) {
+      count_degrees();
+      if (k >= s.maxiter) break;
+      continue;
     }
     if (k >= s.maxiter) break;
 

@@ -26,7 +26,6 @@ SolveReport Uzawa::solve(const ContactProblem &p, const SolverSettings &s, Distr
   report.rho = choose_rho();
 
   velocities_from_multipliers(p, set_.rows(), mu, u, ops);
-  int next_check = 1;    // the set is checked at iterations 1, 2, 4, ..., then every 64, and at convergence
   for (int k = 0;; ++k) {
     // With C = -h G: mu_{k+1} = max(0, mu_k + rho (C u_k - D)) = max(0, mu_k - rho g(u_k)).
     double r = 0.0;
@@ -37,19 +36,17 @@ SolveReport Uzawa::solve(const ContactProblem &p, const SolverSettings &s, Distr
     }
     report.residual = ops.max_all(r);
     report.iterations = k;
-    if (report.residual <= s.tol || k == next_check) {
-      if (k == next_check) next_check += std::min(next_check, 64);
-      if (ops.sum_all(set_.expand(p, u, s.tol)) > 0.0) {
-        // New rows start at mu = 0 and enter the update from the next pass (with a new step:
-        // the bound holds for the working set only).
-        report.rho = choose_rho();
-        if (k >= s.maxiter) break;
-        continue;
-      }
-      if (report.residual <= s.tol) {
-        report.converged = true;
-        break;
-      }
+    const auto verdict = set_.check(k, report.residual, s.tol, p, u, ops);
+    if (verdict == WorkingSet::Verdict::Converged) {
+      report.converged = true;
+      break;
+    }
+    if (verdict == WorkingSet::Verdict::Grown) {
+      // New rows start at mu = 0 and enter the update from the next pass, with a new step:
+      // the bound holds for the working set only.
+      report.rho = choose_rho();
+      if (k >= s.maxiter) break;
+      continue;
     }
     if (k >= s.maxiter) break;
     for (const int c : set_.rows()) mu[c] = next_[c];

@@ -9,6 +9,7 @@ void WorkingSet::init(const ContactProblem &p, const std::vector<double> &mu)
   const int nc = p.n_contacts();
   rows_.clear();
   member_.assign(nc, 0);
+  next_check_ = 1;
   for (int c = 0; c < nc; ++c) {
     const int j = p.body_j[c];
     const Vec3 du = (j >= 0 ? p.u_free[j] : Vec3::Zero()) - p.u_free[p.body_i[c]];
@@ -31,6 +32,17 @@ int WorkingSet::expand(const ContactProblem &p, const std::vector<Vec3> &u, doub
     ++added;
   }
   return added;
+}
+
+WorkingSet::Verdict WorkingSet::check(int k, double residual, double tol,
+                                      const ContactProblem &p, const std::vector<Vec3> &u,
+                                      DistributedOps &ops)
+{
+  const bool scheduled = k == next_check_;
+  if (residual > tol && !scheduled) return Verdict::Iterate;
+  if (scheduled) next_check_ += next_check_ < 64 ? next_check_ : 64;
+  if (ops.sum_all(expand(p, u, tol)) > 0.0) return Verdict::Grown;
+  return residual <= tol ? Verdict::Converged : Verdict::Iterate;
 }
 
 }    // namespace hardcontact

@@ -6,6 +6,7 @@
 #pragma once
 
 #include "contact_problem.h"
+#include "distributed_ops.h"
 
 #include <vector>
 
@@ -13,6 +14,15 @@ namespace hardcontact {
 
 class WorkingSet {
  public:
+  enum class Verdict { Iterate, Grown, Converged };
+
+  // The stopping test every solver shares, given the residual of the set at iteration k: at
+  // iterations 1, 2, 4, ..., then every 64, and whenever the set itself has converged, rows
+  // outside that the iterate violates join the set (Grown: the solver adapts and goes on).
+  // Converged: residual <= tol and nothing violated outside, i.e. eq. 15 holds everywhere.
+  Verdict check(int k, double residual, double tol, const ContactProblem &p,
+                const std::vector<Vec3> &u, DistributedOps &ops);
+
   // Rows with a start multiplier > 0, or whose gap the free relative speed closes in one step.
   void init(const ContactProblem &p, const std::vector<double> &mu);
   // Adds the rows outside the set that u violates by more than tol; returns how many (local).
@@ -24,6 +34,7 @@ class WorkingSet {
  private:
   std::vector<int> rows_;
   std::vector<char> member_;
+  int next_check_ = 1;
 };
 
 }    // namespace hardcontact
