@@ -71,7 +71,8 @@ SolveReport Exact::solve(const ContactProblem &p, const SolverSettings &s, Distr
   std::vector<char> passive(nc, 0);
   bool batch = true;    // add every violated row at once; one at a time if that stalls
   double phi_prev = 0.0;
-  const int max_outer = 10 * nc + 10;
+  // Finite in exact arithmetic; maxiter caps the outer iterations like the others' iterations.
+  const int max_outer = std::min(10 * nc + 10, s.maxiter + 1);
   for (int outer = 0; outer < max_outer; ++outer) {
     const Eigen::VectorXd grad = A * m + b;    // = predicted gaps g(mu)
     const double phi = 0.5 * m.dot(grad + b);
