@@ -25,8 +25,15 @@
 #   LAMMPS_HEADERS_INCLUDE_DIRS, LAMMPS_HEADERS_DEFINITIONS   (also for try_compile checks)
 #   LAMMPS_HAS_LIBRARY           TRUE when a liblammps to link executables against was found
 #   target hardcontact::lammps_headers  INTERFACE: include dirs (SYSTEM) + definitions + MPI
-#                                        includes; no libraries
+#                                        includes and MPI C-only definitions; no libraries
 #   target hardcontact::lammps           (system mode only) the library + MPI, for executables
+#
+# MPI: code for a plugin must see the MPI C API only, as LAMMPS itself does (it builds with
+# MPI_CXX_SKIP_MPICXX). Open MPI's / MPICH's mpi.h otherwise pulls in the C++ bindings, whose
+# inline code references libmpi_cxx (MPI::Comm::Comm(), ompi_mpi_cxx_op_intercept, ...); an lmp
+# not linked to libmpi_cxx then refuses the plugin at `plugin load` (dlopen: undefined symbol
+# _ZN3MPI8Datatype4FreeEv). Hence OMPI_SKIP_MPICXX / MPICH_SKIP_MPICXX (MPI_CXX_COMPILE_DEFINITIONS)
+# on hardcontact::lammps_headers, which the plugin's objects compile with.
 
 include(FindPackageHandleStandardArgs)
 
@@ -41,6 +48,7 @@ option(LAMMPS_MPI_STUBS "Source mode: compile against <LAMMPS_SOURCE_DIR>/STUBS/
 set(LAMMPS_HAS_LIBRARY FALSE)
 set(LAMMPS_HEADERS_DEFINITIONS "")
 set(_lh_mpi_includes "")
+set(_lh_mpi_definitions "")
 
 # "29 Sep 2021" -> 20210929
 function(_lh_date_to_num date out)
@@ -117,6 +125,7 @@ if(LAMMPS_SOURCE_DIR)
   else()
     find_package(MPI REQUIRED COMPONENTS CXX)
     set(_lh_mpi_includes ${MPI_CXX_INCLUDE_DIRS})
+    set(_lh_mpi_definitions ${MPI_CXX_COMPILE_DEFINITIONS} MPICH_SKIP_MPICXX OMPI_SKIP_MPICXX)
   endif()
 
 # ------------------------------------------------------------------------------------- system
@@ -208,6 +217,7 @@ else()
 
   find_package(MPI REQUIRED COMPONENTS CXX)
   set(_lh_mpi_includes ${MPI_CXX_INCLUDE_DIRS})
+  set(_lh_mpi_definitions ${MPI_CXX_COMPILE_DEFINITIONS} MPICH_SKIP_MPICXX OMPI_SKIP_MPICXX)
 
   if(NOT TARGET hardcontact::lammps)
     add_library(hardcontact::lammps INTERFACE IMPORTED)
@@ -222,13 +232,15 @@ endif()
 list(REMOVE_DUPLICATES LAMMPS_HEADERS_DEFINITIONS)
 _lh_read_version("${LAMMPS_HEADERS_DIR}" LAMMPS_HEADERS_VERSION LAMMPS_HEADERS_VERSION_NUM)
 list(APPEND LAMMPS_HEADERS_INCLUDE_DIRS ${_lh_mpi_includes})
+set(_lh_target_definitions ${LAMMPS_HEADERS_DEFINITIONS} ${_lh_mpi_definitions})
+list(REMOVE_DUPLICATES _lh_target_definitions)
 
 if(NOT TARGET hardcontact::lammps_headers)
   add_library(hardcontact::lammps_headers INTERFACE IMPORTED)
   # IMPORTED -> consumers see these include dirs as SYSTEM (no -Wextra noise from LAMMPS/fmt)
   set_target_properties(hardcontact::lammps_headers PROPERTIES
     INTERFACE_INCLUDE_DIRECTORIES "${LAMMPS_HEADERS_INCLUDE_DIRS}"
-    INTERFACE_COMPILE_DEFINITIONS "${LAMMPS_HEADERS_DEFINITIONS}")
+    INTERFACE_COMPILE_DEFINITIONS "${_lh_target_definitions}")
 endif()
 
 find_package_handle_standard_args(LammpsHeaders
