@@ -5,3 +5,15 @@
 # paper 6.2: sticky particles, h = 0.01, 0.5, 1.5, final state against the exact solution
 hardcontact_deck_test(NAME example_sticky_particles SCRIPT integration/test_example_sticky.py
                       NP 1 LABELS examples TIMEOUT 120)
+
+# pile: 750 discs settle (0.15 s), hard contacts and the soft-sphere twin, compare.py
+hardcontact_deck_test(NAME example_pile SCRIPT integration/test_example_pile.py
+                      NP 1 LABELS examples TIMEOUT 240)
+
+# pour: fix pour drops 150 discs (0.4 s), hard contacts and the soft-sphere twin
+hardcontact_deck_test(NAME example_pour SCRIPT integration/test_example_pour.py
+                      NP 1 LABELS examples TIMEOUT 240)
+
+# potentials/glass_beads.params: the restitution asked for is the one gran/hertz/history gives
+hardcontact_deck_test(NAME example_glass_params SCRIPT integration/test_example_glass_params.py
+                      NP 1 LABELS examples TIMEOUT 120)
