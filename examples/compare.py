@@ -22,7 +22,7 @@ import granular as g  # noqa: E402
 SCENES = {
     "pile": dict(dump="pile.dump", walls=[(0, 0.0, 1), (0, 0.08, -1), (1, 0.0, 1)], x=(0.0, 0.08)),
     "pour": dict(dump="pour.dump", walls=[(0, 0.0, 1), (0, 0.1, -1), (1, 0.0, 1)], x=(0.0, 0.1)),
-    "disc_packing": dict(dump="packing.dump", walls=[(0, 0.0, 1), (0, 0.05, -1), (1, 0.0, 1)], x=(0.0, 0.05)),
+    "disc_packing": dict(dump="packing.dump", walls=[(1, 0.0, 1)], x=(0.0, 0.08)),    # periodic in x
 }
 
 

@@ -17,3 +17,7 @@ hardcontact_deck_test(NAME example_pour SCRIPT integration/test_example_pour.py
 # potentials/glass_beads.params: the restitution asked for is the one gran/hertz/history gives
 hardcontact_deck_test(NAME example_glass_params SCRIPT integration/test_example_glass_params.py
                       NP 1 LABELS examples TIMEOUT 120)
+
+# disc_packing: 500 bidisperse discs compressed by gravity: random close packing, isostatic
+hardcontact_deck_test(NAME example_disc_packing SCRIPT integration/test_example_disc_packing.py
+                      NP 1 LABELS examples TIMEOUT 240)
