@@ -21,3 +21,7 @@ hardcontact_deck_test(NAME example_glass_params SCRIPT integration/test_example_
 # disc_packing: 500 bidisperse discs compressed by gravity: random close packing, isostatic
 hardcontact_deck_test(NAME example_disc_packing SCRIPT integration/test_example_disc_packing.py
                       NP 1 LABELS examples TIMEOUT 240)
+
+# hopper: 2d silo on a floor of frozen discs, 480 discs drain through 8 and 12 mm outlets
+hardcontact_deck_test(NAME example_hopper SCRIPT integration/test_example_hopper.py
+                      NP 1 LABELS examples TIMEOUT 240)
