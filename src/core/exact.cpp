@@ -65,7 +65,10 @@ SolveReport Exact::solve(const ContactProblem &p, const SolverSettings &s, Distr
     diag_max = std::max(diag_max, A.coeff(c, c));
   }
   const double reg = 1e-13 * diag_max;    // keeps A_PP definite with redundant rows
-  const double kkt_tol = 1e-13;           // gap units, relative to the contact size
+  // KKT test on g = A mu + b: relative to the contact size, but never below the round-off of
+  // g itself (point-like spheres have sizes far below the gaps' rounding error).
+  const double b_scale = nc > 0 ? b.cwiseAbs().maxCoeff() : 0.0;
+  for (int c = 0; c < nc; ++c) scale[c] = 1e-13 * scale[c] + 1e-14 * b_scale;
 
   Eigen::VectorXd m = Eigen::VectorXd::Zero(nc);
   std::vector<char> passive(nc, 0);
@@ -81,7 +84,7 @@ SolveReport Exact::solve(const ContactProblem &p, const SolverSettings &s, Distr
     int worst = -1;
     int added = 0;
     for (int c = 0; c < nc; ++c) {
-      if (passive[c] || grad[c] >= -kkt_tol * scale[c]) continue;
+      if (passive[c] || grad[c] >= -scale[c]) continue;
       if (batch) {
         passive[c] = 1;
         ++added;

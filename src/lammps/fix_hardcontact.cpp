@@ -206,8 +206,11 @@ void FixHardContact::init()
   double rmax_local = 0.0;
   for (int i = 0; i < atom->nlocal; ++i) rmax_local = MAX(rmax_local, atom->radius[i]);
   MPI_Allreduce(&rmax_local, &rmax_, 1, MPI_DOUBLE, MPI_MAX, world);
-  cutoff_ = 2.0 * rmax_ + neighbor->skin;
+  // A ghost cutoff set by the user (comm_modify cutoff) makes room for larger spheres that
+  // appear later (fix pour into an empty box).
   if (user_cutghost_ < 0.0) user_cutghost_ = comm->cutghostuser;
+  rmax_ = MAX(rmax_, 0.5 * (user_cutghost_ - neighbor->skin));
+  cutoff_ = 2.0 * rmax_ + neighbor->skin;
   comm->cutghostuser = MAX(user_cutghost_, cutoff_);
   if (force->pair == nullptr && (!neighbor->binsizeflag || binsize_set_here_)) {
     // Without a pair style LAMMPS bins with the whole box (master cutoff 0): O(N^2) lists,

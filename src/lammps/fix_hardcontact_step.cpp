@@ -190,7 +190,8 @@ void FixHardContact::solve()
     report = solver_->solve(problem_, settings_, ops_, mu_, u_);    // from the mu found so far
     iterations += report.iterations;
     ++rounds;
-    if (!add_missed_rows()) break;
+    // An unconverged solve is not refined further: its violations are reported, not chased.
+    if (!report.converged || !add_missed_rows()) break;
     if (rounds == MAX_ROUNDS) {
       report.converged = false;
       break;
@@ -200,10 +201,12 @@ void FixHardContact::solve()
     ++maxiter_hits_;
     ++maxiter_hits_run_;
     if (maxiter_hits_run_ == 1 && comm->me == 0)
-      error->warning(FLERR, "Fix hardcontact: the solve of step {} stopped at maxiter {} with "
-                            "residual {:.3g} > tol {:.3g}; overlaps up to that size may remain. "
-                            "Raise maxiter or tol (counted in f_{}[{}]; reported once per run)",
-                     update->ntimestep + 1, settings_.maxiter, report.residual, settings_.tol,
+      error->warning(FLERR, "Fix hardcontact: the solve of step {} stopped unconverged after {} "
+                            "iterations (maxiter {}) with residual {:.3g} > tol {:.3g}; overlaps "
+                            "up to that size may remain. Raise maxiter or tol (counted in "
+                            "f_{}[{}]; reported once per run)",
+                     update->ntimestep, report.iterations, settings_.maxiter, report.residual,
+                     settings_.tol,
                      id, MAXITER_HITS + 1);
   }
   remember_multipliers();
@@ -269,9 +272,23 @@ void FixHardContact::fill_outputs()
   }
 }
 
+namespace {
+// The two largest values over all processes (of distinct atoms): what a pair can add up to.
+void two_largest(double v, double top[2])
+{
+  if (v > top[0]) {
+    top[1] = top[0];
+    top[0] = v;
+  } else if (v > top[1]) {
+    top[1] = v;
+  }
+}
+}    // namespace
+
 // Eq. 19, plus the guarantee that no contact was missed: a pair absent from the list was at
-// least r_i + r_j + skin apart at the last build; while no atom has moved more than skin/2
-// since, it cannot overlap. A rebuild is forced as soon as the next step could break that.
+// least r_i + r_j + skin apart at the last build, so it cannot overlap while the two atoms
+// together have moved less than the skin since (d_i + d_j < skin). A rebuild is forced as soon
+// as the next step could break that even if speeds doubled (gravity, collisions).
 void FixHardContact::move_and_check()
 {
   const int nlocal = atom->nlocal;
@@ -283,8 +300,9 @@ void FixHardContact::move_and_check()
 
   overlap_diagnostics(dt);
 
-  double worst[2] = {0.0, 0.0};    // displacement since the build, same plus one more step
-  double step_max = 0.0;
+  // [0..1] largest displacements since the build, [2..3] same after two more such steps,
+  // [4] largest move of this step
+  double mine[5] = {0.0, 0.0, 0.0, 0.0, 0.0};
   for (int i = 0; i < nlocal; ++i) {
     if (!(mask[i] & groupbit)) continue;
     for (int k = 0; k < 3; ++k) {
@@ -298,21 +316,28 @@ void FixHardContact::move_and_check()
     }
     const double step = dt * u_[i].norm();
     const double disp = (Vec3(x[i]) - xhold_[i]).norm();
-    step_max = MAX(step_max, step);
-    worst[0] = MAX(worst[0], disp);
-    worst[1] = MAX(worst[1], disp + step);
+    two_largest(disp, mine);
+    two_largest(disp + 2.0 * step, mine + 2);
+    mine[4] = MAX(mine[4], step);
   }
-  double all[2];
-  MPI_Allreduce(worst, all, 2, MPI_DOUBLE, MPI_MAX, world);
-  const double step_all = ops_.max_all(step_max);
-  const double half_skin = 0.5 * neighbor->skin;
-  if (all[0] > half_skin)
-    error->all(FLERR, "Fix hardcontact: at step {} an atom moved {:.6g} since the last neighbor "
-                      "list build, more than half the skin ({:.6g}), so a contact may have been "
-                      "missed. The largest move in one step was {:.6g}: use 'neighbor {:.3g} bin' "
-                      "(4 x that) or a smaller timestep", update->ntimestep, all[0], half_skin,
-               step_all, 4.0 * step_all);
-  if (all[1] > half_skin) next_reneighbor = update->ntimestep;
+  std::vector<double> all(5 * comm->nprocs);
+  MPI_Allgather(mine, 5, MPI_DOUBLE, all.data(), 5, MPI_DOUBLE, world);
+  double now[2] = {0.0, 0.0}, ahead[2] = {0.0, 0.0}, step_max = 0.0;
+  for (int p = 0; p < comm->nprocs; ++p) {
+    for (int k = 0; k < 2; ++k) {
+      two_largest(all[5 * p + k], now);
+      two_largest(all[5 * p + 2 + k], ahead);
+    }
+    step_max = MAX(step_max, all[5 * p + 4]);
+  }
+  const double skin = neighbor->skin;
+  if (now[0] + now[1] >= skin)
+    error->all(FLERR, "Fix hardcontact: at step {} two atoms moved {:.6g} and {:.6g} since the "
+                      "last neighbor list build, together more than the skin ({:.6g}), so a "
+                      "contact may have been missed. The largest move in one step was {:.6g}: "
+                      "use 'neighbor {:.3g} bin' or a smaller timestep", update->ntimestep,
+               now[0], now[1], skin, step_max, MAX(2.0 * skin, 8.0 * step_max));
+  if (ahead[0] + ahead[1] >= skin) next_reneighbor = update->ntimestep;
 }
 
 // Largest overlap over the rows at positions q + h u (h = 0: at q), in distance units and
@@ -372,7 +397,8 @@ void FixHardContact::remember_multipliers()
 void FixHardContact::post_run()
 {
   if (maxiter_hits_run_ > 0 && comm->me == 0)
-    error->warning(FLERR, "Fix hardcontact: {} solve(s) of this run stopped at maxiter {}",
+    error->warning(FLERR, "Fix hardcontact: {} solve(s) of this run stopped unconverged "
+                          "(maxiter {})",
                    maxiter_hits_run_, settings_.maxiter);
   maxiter_hits_run_ = 0;
 }
