@@ -1,0 +1,14 @@
+# Outputs and restarts of fix hardcontact.
+#   outputs_np*: global vector, per-atom and local arrays against each other and against the
+#                mechanics (Newton's third law, wall load = weight, momentum with a starved
+#                solver, initial-overlap policy); tests/integration/test_outputs.py
+#   restart_np*: run 40 == run 20 + write_restart + (new process) read_restart + run 20,
+#                within the solver tolerance; tests/integration/test_restart.py
+foreach(_np 1 2 4)
+  hardcontact_deck_test(NAME outputs_np${_np} SCRIPT integration/test_outputs.py NP ${_np}
+                        LABELS outputs TIMEOUT 300)
+endforeach()
+foreach(_np 1 2)
+  hardcontact_deck_test(NAME restart_np${_np} SCRIPT integration/test_restart.py NP ${_np}
+                        LABELS restart TIMEOUT 180)
+endforeach()
