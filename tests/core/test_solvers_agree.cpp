@@ -88,3 +88,28 @@ TEST(SolversAgree, MomentumExactWhenStoppedEarly)
                 1e-14 * (hctest::momentum_scale(p, p.u_free) + impulses));
     }
 }
+
+// Known gap (reported, not fixed here: src/ belongs to the core): a negative start multiplier
+// on a row outside the working set is returned unchanged by uzawa, apgd and pgs (the working
+// set only takes rows with mu > 0 or closable gaps; velocities ignore the rest), so the
+// "converged" result holds mu < 0 that u does not reflect. Hosts warm-start from earlier
+// results (always >= 0), so this only bites a caller passing negative start values.
+// Enable with --gtest_also_run_disabled_tests.
+TEST(SolversAgree, DISABLED_NegativeStartMultipliersAreNotReturned)
+{
+  for (const std::string &name : solver_names()) {
+    SCOPED_TRACE(name);
+    // Apart (gap 0.5) and separating: nothing to do, mu must come back 0.
+    ContactProblem p = hctest::make_problem(0.1, {1.0, 1.0}, {Vec3(-1, 0, 0), Vec3(1, 0, 0)});
+    hctest::add_pair(p, 0, 1, Vec3(0, 0, 0), Vec3(2.5, 0, 0), 1.0, 1.0);
+    std::unique_ptr<Solver> s = make_solver(name);
+    SerialOps ops;
+    SolverSettings set;
+    set.tol = 1e-12;
+    std::vector<double> mu{-5.0};
+    std::vector<Vec3> u;
+    EXPECT_TRUE(s->solve(p, set, ops, mu, u).converged);
+    EXPECT_GE(mu[0], 0.0);
+    EXPECT_EQ(u[0], p.u_free[0]);
+  }
+}
