@@ -126,9 +126,11 @@ void FixHardContact::parse_keywords(int narg, char **arg)
       need(1);
       if (!utils::is_integer(arg[iarg + 1]))
         error->all(FLERR, "Fix hardcontact maxiter: expected an integer, got '{}'", arg[iarg + 1]);
-      settings_.maxiter = utils::inumeric(FLERR, arg[iarg + 1], false, lmp);
-      if (settings_.maxiter < 1)
-        error->all(FLERR, "Fix hardcontact maxiter must be at least 1, got {}", arg[iarg + 1]);
+      const bigint maxiter = utils::bnumeric(FLERR, arg[iarg + 1], false, lmp);
+      if (maxiter < 1 || maxiter > MAXSMALLINT)
+        error->all(FLERR, "Fix hardcontact maxiter must be between 1 and {}, got {}", MAXSMALLINT,
+                   arg[iarg + 1]);
+      settings_.maxiter = static_cast<int>(maxiter);
       iarg += 2;
     } else if (keyword == "rho") {
       need(1);
@@ -183,7 +185,9 @@ void FixHardContact::check_walls_in_box()
     if (domain->periodicity[w.dim])
       error->all(FLERR, "Fix hardcontact wall {} needs a non-periodic boundary in that "
                         "direction: change the boundary command", names[w.dim]);
-    if (w.coord < domain->boxlo[w.dim] || w.coord > domain->boxhi[w.dim])
+    // A shrink-wrapped box follows the atoms: only fixed boundaries bound the wall.
+    const bool fixed_lo = domain->boundary[w.dim][0] == 1, fixed_hi = domain->boundary[w.dim][1] == 1;
+    if ((fixed_lo && w.coord < domain->boxlo[w.dim]) || (fixed_hi && w.coord > domain->boxhi[w.dim]))
       error->all(FLERR, "Fix hardcontact wall {} at {} lies outside the box ({} to {}): move "
                         "it inside", names[w.dim], w.coord, domain->boxlo[w.dim],
                  domain->boxhi[w.dim]);
@@ -193,7 +197,7 @@ void FixHardContact::check_walls_in_box()
 void FixHardContact::init()
 {
   if (domain->triclinic)
-    error->all(FLERR, "Fix hardcontact does not support triclinic boxes");
+    error->all(FLERR, "Fix hardcontact does not support triclinic boxes: use an orthogonal box");
   if (utils::strmatch(update->integrate_style, "^respa"))
     error->all(FLERR, "Fix hardcontact does not support run_style respa: use verlet");
   check_walls_in_box();
@@ -242,12 +246,17 @@ void FixHardContact::post_neighbor()
   for (int i = 0; i < atom->nlocal; ++i) rmax_local = MAX(rmax_local, atom->radius[i]);
   double rmax_now;
   MPI_Allreduce(&rmax_local, &rmax_now, 1, MPI_DOUBLE, MPI_MAX, world);
-  if (rmax_now > rmax_)
-    error->all(FLERR, "Fix hardcontact: an atom of radius {} appeared during the run, larger "
-                      "than the largest radius {} at its start; the neighbor list would miss its "
-                      "contacts: use 'comm_modify cutoff {}' and restart the run", rmax_now, rmax_,
-               2.0 * rmax_now + neighbor->skin);
+  if (rmax_now > rmax_) radius_grew(rmax_now);
   store_xhold();
+}
+
+void FixHardContact::radius_grew(double rmax_now)
+{
+  error->all(FLERR, "Fix hardcontact: a sphere of radius {} appeared during the run, larger than "
+                    "the {} the neighbor list and ghosts were sized for; its contacts could be "
+                    "missed: use 'comm_modify cutoff {:.6g}' (room for radius {:.6g} with this "
+                    "skin) before the run", rmax_now, rmax_,
+             2.0 * rmax_now + neighbor->skin, rmax_now);
 }
 
 void FixHardContact::store_xhold()
@@ -270,7 +279,8 @@ void FixHardContact::setup(int)
   if (diag_[MAX_OVERLAP_RELATIVE] > settings_.tol && comm->me == 0)
     error->warning(FLERR, "Fix hardcontact: the run starts with overlapping spheres (largest "
                           "overlap {:.6g}, {:.3g} of the contact size); they are pushed apart no "
-                          "faster than the fastest free velocity of the group",
+                          "faster than the external forces accelerate an atom in one step (with "
+                          "no force they stay, without growing)",
                    diag_[MAX_OVERLAP], diag_[MAX_OVERLAP_RELATIVE]);
   mu_.clear();
   problem_.clear_contacts();

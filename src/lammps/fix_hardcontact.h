@@ -72,7 +72,7 @@ class FixHardContact : public Fix {
   double diag_[NVECTOR] = {};
   bigint maxiter_hits_ = 0;
   bigint maxiter_hits_run_ = 0;
-  double recovery_speed_ = 0.0;    // overlap policy, see select_rows()
+  double recovery_speed_ = 0.0;    // overlap policy, see add_row()
   std::vector<hardcontact::Vec3> force_;    // contact force per owned atom
   int nmax_ = 0;
   int nlocal_rows_max_ = 0;
@@ -80,6 +80,7 @@ class FixHardContact : public Fix {
   void parse_keywords(int narg, char **arg);
   void check_walls_in_box();
   void check_atoms();
+  void radius_grew(double rmax_now);    // stops with an error
   void store_xhold();
   void build_bodies();
   void build_candidates(double scale);

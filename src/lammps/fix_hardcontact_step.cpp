@@ -54,12 +54,16 @@ void FixHardContact::build_bodies()
     problem_.inv_mass[i] = (mask[i] & groupbit) ? force->ftm2v / rmass[i] : 0.0;
 
   tagint bad = 0;
-  double vmax = 0.0;
+  double local[2] = {0.0, 0.0};    // largest velocity change from the forces, largest radius
   for (int i = 0; i < nlocal; ++i) {
     Vec3 u(v[i]);
-    if (mask[i] & groupbit) u += (dtfm / rmass[i]) * Vec3(f[i]);
+    if (mask[i] & groupbit) {
+      const Vec3 kick = (dtfm / rmass[i]) * Vec3(f[i]);
+      u += kick;
+      local[0] = MAX(local[0], kick.norm());
+      local[1] = MAX(local[1], atom->radius[i]);
+    }
     if (!u.allFinite() && !bad) bad = atom->tag[i];
-    if (mask[i] & groupbit) vmax = MAX(vmax, u.norm());
     problem_.u_free[i] = u;
   }
   tagint bad_all;
@@ -67,7 +71,11 @@ void FixHardContact::build_bodies()
   if (bad_all)
     error->all(FLERR, "Fix hardcontact: atom {} has a non-finite velocity or force at step {}: "
                       "check the forces acting on it", bad_all, update->ntimestep);
-  recovery_speed_ = ops_.max_all(vmax);
+  double global[2];
+  MPI_Allreduce(local, global, 2, MPI_DOUBLE, MPI_MAX, world);
+  recovery_speed_ = global[0];
+  // Radii may change during a run (fix adapt): the list and ghosts only reach 2 r_max + skin.
+  if (global[1] > rmax_) radius_grew(global[1]);
   ops_.forward(problem_.u_free.data()->data(), 3);
 
   // The exact solver assembles the operator: on one process, ghosts are periodic images.
