@@ -33,5 +33,6 @@ hardcontact_deck_test(NAME phys_cluster_ranks SCRIPT integration/test_phys_clust
 hardcontact_deck_test(NAME phys_cluster_ranks_full SCRIPT integration/test_phys_cluster_ranks.py
                       NP 4 LABELS physics soak ARGS --full TIMEOUT 2400)
 
-# Not registered until the fix is fixed: test_phys_skin_lookahead.py (the neighbor rebuild
-# look-ahead ignores accelerations; a falling sphere stops the run with a skin 9 x its step).
+# the neighbor rebuild look-ahead under acceleration: a falling sphere with a skin 9 x its step
+hardcontact_deck_test(NAME phys_skin_lookahead SCRIPT integration/test_phys_skin_lookahead.py
+                      NP 1 LABELS physics TIMEOUT 300)
