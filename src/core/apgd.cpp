@@ -18,6 +18,7 @@ SolveReport Apgd::solve(const ContactProblem &p, const SolverSettings &s, Distri
 {
   const int nc = p.n_contacts();
   mu.resize(nc, 0.0);
+  for (double &m : mu) m = std::max(0.0, m);    // a start below 0 is no contact force
   for (auto *v : {&b_, &g_, &y_, &gy_, &next_, &gnext_}) v->assign(nc, 0.0);
   set_.init(p, mu);
 

@@ -12,6 +12,7 @@ SolveReport Pgs::solve(const ContactProblem &p, const SolverSettings &s, Distrib
 {
   const int nc = p.n_contacts();
   mu.resize(nc, 0.0);
+  for (double &m : mu) m = std::max(0.0, m);    // a start below 0 is no contact force
   set_.init(p, mu);
   velocities_from_multipliers(p, set_.rows(), mu, u, ops);
   const double h2 = p.h * p.h;

@@ -13,6 +13,7 @@ SolveReport Uzawa::solve(const ContactProblem &p, const SolverSettings &s, Distr
 {
   const int nc = p.n_contacts();
   mu.resize(nc, 0.0);
+  for (double &m : mu) m = std::max(0.0, m);    // a start below 0 is no contact force
   next_.resize(nc);
   set_.init(p, mu);
 

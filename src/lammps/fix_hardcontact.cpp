@@ -278,9 +278,9 @@ void FixHardContact::setup(int)
   diag_[MAXITER_HITS] = static_cast<double>(maxiter_hits_);
   if (diag_[MAX_OVERLAP_RELATIVE] > settings_.tol && comm->me == 0)
     error->warning(FLERR, "Fix hardcontact: the run starts with overlapping spheres (largest "
-                          "overlap {:.6g}, {:.3g} of the contact size); they are pushed apart no "
-                          "faster than the external forces accelerate an atom in one step (with "
-                          "no force they stay, without growing)",
+                          "overlap {:.6g}, {:.3g} of the contact size); each step clears at most "
+                          "h x the velocity the forces give in one step, plus 2 tol x size, so "
+                          "that no energy explodes (see the doc page)",
                    diag_[MAX_OVERLAP], diag_[MAX_OVERLAP_RELATIVE]);
   mu_.clear();
   problem_.clear_contacts();

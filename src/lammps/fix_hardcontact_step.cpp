@@ -138,11 +138,15 @@ bool FixHardContact::add_missed_rows()
 
 void FixHardContact::add_row(int i, int j, const Vec3 &n, double d, double size)
 {
-  // Overlap policy: a pair overlapping at q^n (D < 0) is asked to separate no faster than
-  // the fastest free velocity of the group, so clearing it cannot create energy beyond the
-  // scene's own scale. For D >= 0, the normal case, this is eq. 15 unchanged.
+  // Overlap policy: a pair overlapping at q^n (D < 0) is asked to separate by no more than h
+  // times the largest velocity the external forces give in one step (g h under gravity), plus
+  // twice the solver tolerance. The first part does not feed on itself: clearing overlaps adds
+  // at most about m (g h)^2 per atom and step, and with no force large overlaps stay as they
+  // are. The second clears what a solve stopped at tol leaves, so such overlaps never add up.
+  // For D >= 0, the normal case, this is eq. 15 unchanged.
   const bool counted = j < 0 || j < atom->nlocal || atom->tag[i] < atom->tag[j];
-  problem_.add_contact(i, j, n, MAX(d, -problem_.h * recovery_speed_), size, counted);
+  const double floor = -(problem_.h * recovery_speed_ + 2.0 * settings_.tol * size);
+  problem_.add_contact(i, j, n, MAX(d, floor), size, counted);
 }
 
 template <class F> void FixHardContact::visit_pairs(F &&f)

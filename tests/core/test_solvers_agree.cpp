@@ -95,7 +95,7 @@ TEST(SolversAgree, MomentumExactWhenStoppedEarly)
 // "converged" result holds mu < 0 that u does not reflect. Hosts warm-start from earlier
 // results (always >= 0), so this only bites a caller passing negative start values.
 // Enable with --gtest_also_run_disabled_tests.
-TEST(SolversAgree, DISABLED_NegativeStartMultipliersAreNotReturned)
+TEST(SolversAgree, NegativeStartMultipliersAreNotReturned)
 {
   for (const std::string &name : solver_names()) {
     SCOPED_TRACE(name);

@@ -6,3 +6,7 @@ foreach(_np 1 2 4)
   hardcontact_deck_test(NAME errors_np${_np} SCRIPT integration/test_errors.py NP ${_np}
                         LABELS errors TIMEOUT 600)
 endforeach()
+
+# the fix bugs these scripts once documented are fixed: keep them as regression tests
+hardcontact_deck_test(NAME errors_fixed_bugs_np1 SCRIPT integration/test_errors.py NP 1
+                      LABELS errors ARGS --known-bugs TIMEOUT 600)

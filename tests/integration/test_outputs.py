@@ -398,10 +398,10 @@ def part_c(args, known_bugs, options):
              % (hits[-1], GAS_STEPS))
     inc = np.diff(hits)
     lr.check(((inc >= 0) & (inc <= 1)).all(), tag + " f_1[6] grows by 0 or 1 per step")
-    summary = [w for w in warn if re.search(r"(\d+) solve\(s\) of this run stopped at maxiter 2", w)]
+    summary = [w for w in warn if re.search(r"(\d+) solve\(s\) of this run stopped unconverged \(maxiter 2\)", w)]
     lr.check(summary and int(re.search(r"(\d+) solve", summary[0]).group(1)) == int(hits[-1]),
              tag + " the end-of-run warning counts the same %d solves: %s" % (hits[-1], summary[:1]))
-    first = [w for w in warn if "stopped at maxiter 2 with residual" in w]
+    first = [w for w in warn if "stopped unconverged after" in w and "(maxiter 2)" in w]
     lr.check(len(first) == 1, tag + " the first starved solve is reported once")
     first_step = int(th["Step"][np.argmax(hits > 0)])
     said = int(re.search(r"solve of step (\d+)", first[0]).group(1))
@@ -493,8 +493,9 @@ run             {steps}
 
 def part_d_row(args, known_bugs):
     """Five spheres in a row on the floor, each overlapping the next by 20%, under gravity:
-    KE should stay of order m (g h)^2 per atom like the pairs above."""
-    g, dt, steps = 1.0, 0.05, 20
+    KE should stay of order m (g h)^2 per atom like the pairs above, while the overlaps clear
+    at most h x g h (+ 2 tol size) per step: 0.2 takes about 80 steps."""
+    g, dt, steps = 1.0, 0.05, 200
     ke_unit = np.pi / 6.0 * (g * dt) ** 2
     wd = lr.fresh_workdir("%s/d_overlap_row" % args.workdir)
     res = lr.run_deck(args.lmp, ROW_DECK.format(dt=dt, g=g, steps=steps), args.np, wd,
@@ -502,19 +503,14 @@ def part_d_row(args, known_bugs):
     th = res.thermo[0]
     per_atom = float(th["KinEng"].max()) / 5
     lr.check(th["f_1[2]"][-1] <= 1e-4, "(d, row) the overlaps are cleared (%.2g)" % th["f_1[2]"][-1])
-    if per_atom > ke_unit:
-        ke = th["KinEng"]
-        msg = ("KNOWN BUG (d, row): a row of 5 spheres on the floor overlapping by 20%% under "
-               "gravity explodes: KE per atom reaches %.3g = %.0f m (g h)^2 (KE by step: %s); "
-               "every overlapping row must separate at the group's largest free speed, which "
-               "includes the previous step's separation speed, and the ends of a chain of k "
-               "spheres need (k-1)/2 times that: the speed doubles every step"
-               % (per_atom, per_atom / ke_unit, " ".join("%.3g" % k for k in ke[:8])))
-        print(msg)
-        if known_bugs:
-            raise AssertionError(msg)
-    else:
-        print("ok: (d, row) KE per atom stays below m (g h)^2 (%.3g)" % per_atom)
+    # Each contact separates at most at g h (+ the tolerance part): the ends of the row of 5
+    # move at up to 2 g h, i.e. about m (g h)^2 per atom on average; twice that is the bound.
+    ke = th["KinEng"]
+    lr.check(per_atom <= 2 * ke_unit,
+             "(d, row) KE per atom stays below 2 m (g h)^2 = %.3g (%.3g)" % (2 * ke_unit, per_atom))
+    lr.check(float(ke[len(ke) // 2:].max()) <= float(ke.max()) and
+             float(ke[-20:].max()) <= float(ke[:40].max()) * (1 + 1e-9),
+             "(d, row) KE does not grow once the overlaps clear (no feedback)")
 
 
 def part_d(args):
@@ -528,14 +524,24 @@ def part_d(args):
     lr.check(len(warn) == 1 and "0.2" in warn[0], "(d) a WARNING about overlapping spheres with "
              "the largest overlap 0.2: %s" % warn[:1])
     th = res.thermo[0]
-    lr.check(float(np.abs(th["KinEng"]).max()) == 0.0, "(d) at rest: KE stays exactly 0")
-    frames = lr.read_dump(wd / "atoms.dump")
-    x0 = [frames[0].columns[k] for k in "xyz"]
-    moved = max(float(np.abs(f.columns[k] - x0[n]).max()) for f in frames for n, k in enumerate("xyz"))
-    lr.check(moved == 0.0, "(d) at rest: nothing moves")
-    lr.check(np.allclose(th["f_1[2]"], 0.2, atol=1e-12),
-             "(d) at rest: the overlap stays 0.2 (f_1[2] from %.6g to %.6g)"
-             % (th["f_1[2]"].min(), th["f_1[2]"].max()))
+    # Policy (doc): with no force, an overlap is cleared by at most 2 tol x size per step (plus
+    # the tol the solve may leave), so each contact parts at no more than 3 tol size / h, the
+    # kinetic energy stays bounded (a column of k contacts: k times that) and stops growing.
+    tol, size = 1e-4, 1.0
+    v_max = 2 * 3.0 * tol * size / dt    # two contacts in the stacked column
+    ke_bound = 4 * 0.5 * mass * v_max ** 2
+    ke = th["KinEng"]
+    lr.check(float(np.abs(ke).max()) <= ke_bound,
+             "(d) at rest: KE stays below 4 x 1/2 m (2 x 3 tol size / h)^2 (%.3g <= %.3g)"
+             % (float(np.abs(ke).max()), ke_bound))
+    lr.check(float(ke[len(ke) // 2:].max()) <= float(ke[:20].max()) * (1 + 1e-9),
+             "(d) at rest: KE does not grow after the first steps (%.3g vs %.3g)"
+             % (float(ke[len(ke) // 2:].max()), float(ke[:20].max())))
+    ov = th["f_1[2]"]
+    lr.check(bool(np.all(np.diff(ov) <= 1e-15)) and ov.max() <= 0.2 + 1e-12,
+             "(d) at rest: the overlap never grows (f_1[2] from %.6g to %.6g)" % (ov.max(), ov.min()))
+    lr.check(bool(np.all(np.diff(ov) >= -3 * tol * size * (1 + 1e-9))),
+             "(d) at rest: it shrinks by at most 3 tol x size per step (2 tol + the solve's tol)")
 
     # under gravity on the floor
     wd = lr.fresh_workdir("%s/d_overlap_gravity" % args.workdir)

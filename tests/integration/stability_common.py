@@ -1,0 +1,258 @@
+"""Shared pieces of the stability deck tests (test_stab_*.py): deterministic data files for
+atom_style sphere, one deck template with every per-step diagnostic the checks need, and the
+checks of the paper's guarantees (SCHEME.md, section 4) on the thermo output and the dumps.
+
+Why data files: create_atoms numbers atoms differently with the number of MPI ranks and
+random() in atom-style variables is per rank; a data file written here (fixed numpy seeds,
+every float at full precision with repr) gives the same scene on every rank count.
+
+Thermo of every deck (one row per step, %.16g):
+  Step Atoms c_ke  c_P[1..3] (sum m v)  c_P[4] (sum m |v|)  c_P[5] (sum m g z, 0 without
+  gravity)  c_vmax (largest speed)  f_hc[1..9] (the fix's global vector, doc/fix_hardcontact.md)
+"""
+
+import math
+
+import numpy as np
+
+import lammps_run as lr
+
+DUMP_COLUMNS = "id radius mass x y z vx vy vz f_hc[1] f_hc[2] f_hc[3] f_hc[4]"
+LOCAL_COLUMNS = "f_hc[1] f_hc[2] f_hc[3] f_hc[4] f_hc[5] f_hc[6] f_hc[7]"
+
+DECK = """
+units           lj
+atom_style      sphere
+dimension       {dim}
+boundary        {boundary}
+atom_modify     map array
+comm_modify     vel yes
+read_data       {data}
+pair_style      none
+neighbor        {skin} bin
+neigh_modify    delay 0 every 1 check {check}
+{forces}
+fix             hc all hardcontact {keywords}
+{enforce2d}
+timestep        {h}
+compute         ke all ke
+variable        mvx atom mass*vx
+variable        mvy atom mass*vy
+variable        mvz atom mass*vz
+variable        mv atom mass*sqrt(vx*vx+vy*vy+vz*vz)
+variable        mgz atom mass*{g}*{up}
+compute         P all reduce sum v_mvx v_mvy v_mvz v_mv v_mgz
+variable        sp atom sqrt(vx*vx+vy*vy+vz*vz)
+compute         vmax all reduce max v_sp
+thermo_style    custom step atoms c_ke c_P[1] c_P[2] c_P[3] c_P[4] c_P[5] c_vmax &
+                f_hc[1] f_hc[2] f_hc[3] f_hc[4] f_hc[5] f_hc[6] f_hc[7] f_hc[8] f_hc[9]
+thermo_modify   norm no lost error format float %.16g
+thermo          {thermo}
+{dumps}
+run             {nsteps}
+"""
+
+THERMO_COLUMNS = ["Step", "Atoms", "c_ke", "c_P[1]", "c_P[2]", "c_P[3]", "c_P[4]", "c_P[5]", "c_vmax"] + \
+    ["f_hc[%d]" % k for k in range(1, 10)]
+
+
+def deck(data, nsteps, h, skin, keywords="", dim=3, boundary="f f f", gravity=0.0,
+         thermo=1, dump_every=0, local_every=0, extra_dumps="", extra_forces="",
+         rebuild_every_step=False):
+    """The deck text. gravity g > 0 pulls along -z (3d) or -y (2d); dump_every > 0 writes
+    dump.atoms (DUMP_COLUMNS, %.16g, sorted by id), local_every > 0 dump.local (the fix's
+    local array)."""
+    up = "y" if dim == 2 else "z"
+    forces = extra_forces
+    if gravity:
+        vec = "0 -1 0" if dim == 2 else "0 0 -1"
+        forces += "\nfix             grav all gravity %r vector %s" % (float(gravity), vec)
+    dumps = extra_dumps
+    if dump_every:
+        dumps += ("\ndump            d all custom %d dump.atoms %s\n"
+                  "dump_modify     d format float %%.16g sort id" % (dump_every, DUMP_COLUMNS))
+    if local_every:
+        dumps += ("\ndump            l all local %d dump.local %s\n"
+                  "dump_modify     l format float %%.16g" % (local_every, LOCAL_COLUMNS))
+    return DECK.format(dim=dim, boundary=boundary, data=data, skin=repr(float(skin)),
+                       forces=forces, keywords=keywords,
+                       enforce2d="fix             e2d all enforce2d" if dim == 2 else "",
+                       h=repr(float(h)), g=repr(float(gravity)), up=up, thermo=thermo,
+                       check="no" if rebuild_every_step else "yes",
+                       dumps=dumps, nsteps=nsteps)
+
+
+def write_data(path, box, radius, density, x, v=None, title="hardcontact stability test"):
+    """LAMMPS data file for atom_style sphere: atoms 1..N in the given order, type 1.
+    box = ((xlo, xhi), (ylo, yhi), (zlo, zhi)); radius, density per atom or scalar; x (N, 3);
+    v (N, 3) (default 0). Floats with repr: the file holds exactly these doubles."""
+    x = np.asarray(x, dtype=float).reshape(-1, 3)
+    n = len(x)
+    radius = np.broadcast_to(np.asarray(radius, dtype=float), (n,))
+    density = np.broadcast_to(np.asarray(density, dtype=float), (n,))
+    v = np.zeros((n, 3)) if v is None else np.asarray(v, dtype=float).reshape(n, 3)
+    r = repr
+    lines = [title, "", "%d atoms" % n, "1 atom types", ""]
+    for (lo, hi), name in zip(box, ("x", "y", "z")):
+        lines.append("%s %s %slo %shi" % (r(float(lo)), r(float(hi)), name, name))
+    lines += ["", "Atoms # sphere", ""]
+    for i in range(n):
+        lines.append("%d 1 %s %s %s %s %s" % (i + 1, r(2.0 * float(radius[i])), r(float(density[i])),
+                                              r(float(x[i, 0])), r(float(x[i, 1])), r(float(x[i, 2]))))
+    lines += ["", "Velocities", ""]
+    for i in range(n):
+        lines.append("%d %s %s %s 0 0 0" % (i + 1, r(float(v[i, 0])), r(float(v[i, 1])), r(float(v[i, 2]))))
+    with open(str(path), "w") as f:
+        f.write("\n".join(lines) + "\n")
+
+
+def run(args, text, workdir, data_path, np_=None, timeout=None):
+    """Run a deck (np_ ranks, default args.np) with the data file copied in; check that it
+    ran without ERROR and return (result, thermo block)."""
+    res = lr.run_deck(args.lmp, text, args.np if np_ is None else np_, workdir,
+                      files=[data_path], timeout=timeout or args.timeout)
+    lr.check(not res.errors, "%s: no ERROR" % workdir)
+    lr.check(len(res.thermo) == 1, "%s: one thermo block" % workdir)
+    th = res.thermo[0]
+    missing = [c for c in THERMO_COLUMNS if c not in th]
+    lr.check(not missing, "thermo columns present (missing %s)" % missing)
+    return res, th
+
+
+# ----------------------------------------------------------------------------------- frames
+
+def positions(fr):
+    c = fr.columns
+    return np.column_stack([c["x"], c["y"], c["z"]])
+
+
+def velocities(fr):
+    c = fr.columns
+    return np.column_stack([c["vx"], c["vy"], c["vz"]])
+
+
+def pair_overlap(x, radius, block=256):
+    """Largest overlap over ALL pairs relative to r_i + r_j (0 if none) and the pair (0-based):
+    brute force, independent of the fix's neighbour list and candidates."""
+    x = np.asarray(x, dtype=float)
+    radius = np.asarray(radius, dtype=float)
+    n = len(x)
+    worst, where = 0.0, None
+    for a in range(0, n, block):
+        xa = x[a:a + block]
+        d = np.sqrt(((xa[:, None, :] - x[None, :, :]) ** 2).sum(axis=2))
+        size = radius[a:a + block, None] + radius[None, :]
+        rel = (size - d) / size
+        idx = np.arange(a, min(a + block, n))
+        rel[idx - a, idx] = -np.inf
+        k = np.unravel_index(np.argmax(rel), rel.shape)
+        if rel[k] > worst:
+            worst, where = float(rel[k]), (int(idx[k[0]]), int(k[1]))
+    return worst, where
+
+
+def wall_overlap(x, radius, walls):
+    """Largest overlap with flat walls relative to r: walls = [(dim, coord, +1 lo / -1 hi)]."""
+    worst = 0.0
+    for dim, coord, side in walls:
+        gap = side * (x[:, dim] - coord) - radius
+        worst = max(worst, float((-gap / radius).max()))
+    return worst
+
+
+def all_finite(fr):
+    return all(np.all(np.isfinite(fr.columns[k].astype(float))) for k in fr.columns)
+
+
+# ----------------------------------------------------------------------------------- checks
+
+def momentum_drift(th):
+    """max over steps of |P(t) - P(0)| / max_t sum m |v|: relative momentum error."""
+    P = np.column_stack([th["c_P[1]"], th["c_P[2]"], th["c_P[3]"]])
+    scale = max(float(th["c_P[4]"].max()), 1e-300)
+    return float(np.abs(P - P[0]).max()) / scale
+
+
+def energy_rises(e, scale=None):
+    """Largest step-to-step increase of the series e, relative to scale (default e[0])."""
+    e = np.asarray(e, dtype=float)
+    if len(e) < 2:
+        return 0.0
+    s = scale if scale is not None else max(abs(float(e[0])), 1e-300)
+    return float(max(0.0, np.diff(e).max())) / s
+
+
+def check_common(th, natoms, tol, label, overlap_factor=1.0, check=lr.check):
+    """What every stability case asserts from the per-step thermo: no lost atom, every value
+    finite, f_hc[7] (largest overlap / contact size after the step) <= overlap_factor * tol
+    at every step, and no solve stopped at maxiter (f_hc[6] = 0)."""
+    check(bool(np.all(th["Atoms"] == natoms)), "%s: no lost atom (%d at every step)" % (label, natoms))
+    finite = all(np.all(np.isfinite(th[c])) for c in th)
+    check(finite, "%s: every thermo value finite (no NaN/inf)" % label)
+    ov = float(th["f_hc[7]"].max())
+    step = int(th["Step"][int(np.argmax(th["f_hc[7]"]))])
+    check(ov <= overlap_factor * tol,
+             "%s: largest overlap / size over the run %.3g (step %d) <= %.3g" %
+             (label, ov, step, overlap_factor * tol))
+    hits = float(th["f_hc[6]"][-1])
+    check(hits == 0.0, "%s: no solve stopped at maxiter (f_hc[6] = %g)" % (label, hits))
+    return ov
+
+
+class Checks:
+    """Soft assertions: every check of a case is evaluated and printed (ok / FAIL), so that
+    one failing property does not hide the others; finish() raises if any failed."""
+
+    def __init__(self):
+        self.failed = []
+
+    def __call__(self, condition, message):
+        if condition:
+            print("ok:", message)
+        else:
+            print("FAIL:", message)
+            self.failed.append(message)
+        return bool(condition)
+
+    def finish(self):
+        if self.failed:
+            raise AssertionError("%d check(s) failed:\n  " % len(self.failed) +
+                                 "\n  ".join(self.failed))
+
+
+def report(name, **values):
+    """One line of measured numbers, for doc/stability.md (grep 'MEASURED')."""
+    parts = ["%s=%s" % (k, ("%.3g" % v) if isinstance(v, float) else v) for k, v in values.items()]
+    print("MEASURED %s: %s" % (name, " ".join(parts)))
+
+
+def hex_lattice_2d(ncol, nrow, r, gap=0.0):
+    """Hexagonal packing of discs of radius r in a box of width 2 r ncol: even rows hold ncol
+    discs touching each other and both side walls, odd rows ncol - 1 discs in the hollows.
+    gap: extra vertical distance between rows (0 = touching). Returns (N, 3), z = 0."""
+    d = 2.0 * r
+    dy = math.sqrt(3.0) * r + gap
+    pts = []
+    for j in range(nrow):
+        y = r + j * dy
+        if j % 2 == 0:
+            pts += [(r + i * d, y, 0.0) for i in range(ncol)]
+        else:
+            pts += [(2.0 * r + i * d, y, 0.0) for i in range(ncol - 1)]
+    return np.array(pts)
+
+
+def fcc_lattice(n, nlayer, r, gap=0.0):
+    """FCC packing of spheres of radius r stacked as (100) layers in a box of side 2 r n:
+    even layers n x n touching spheres (touching the four side walls), odd layers
+    (n-1) x (n-1) in the hollows, layer spacing sqrt(2) r (+ gap). Returns (N, 3)."""
+    d = 2.0 * r
+    dz = math.sqrt(2.0) * r + gap
+    pts = []
+    for k in range(nlayer):
+        z = r + k * dz
+        if k % 2 == 0:
+            pts += [(r + i * d, r + j * d, z) for i in range(n) for j in range(n)]
+        else:
+            pts += [(2.0 * r + i * d, 2.0 * r + j * d, z) for i in range(n - 1) for j in range(n - 1)]
+    return np.array(pts)

@@ -1,0 +1,178 @@
+#!/usr/bin/env python3
+"""Dense crystals squeezed by gravity in a box of walls: redundant contacts (the paper's
+example of non-unique multipliers, section 4 before Lemma 1).
+
+2d: hexagonal discs (fix enforce2d), r = 0.5, rows of 10 and 9 alternately (the rows of 10
+touch each other and both side walls: `wall xplane 0 10`), 12 rows; 3d: FCC spheres stacked as
+(100) layers of 4 x 4 and 3 x 3 in a 4 x 4 (diameters) box, 7 layers. Every interior body has
+6 (2d) / 12 (3d) contacts for 2 / 3 degrees of freedom. The rows start 0.02 apart vertically at
+rest and fall under gravity (g = 1, h = 0.01) onto the floor and onto each other; after
+NSETTLE steps the crystal is at rest and is followed for --steps more steps (1000 in CI,
+10^4 in the soak variant). tol = 1e-6 (tighter than the default so that "at rest" is sharp).
+
+Asserted after settling (d = 2 r, L = rows or layers):
+  at rest: every |v| <= 10 tol d / h (a solve may leave a predicted gap error of tol d per
+     step, i.e. a velocity tol d / h);
+  the ideal crystal: every centre within L tol d of its ideal lattice site (each of the L
+     contacts below it may be off by tol d);
+  unique velocities / positions (Lemma 1, Prop. 5: u is unique even when mu is not): the runs
+     apgd + warmstart yes, apgd + warmstart no, uzawa (the paper's solver, warm) and exact
+     (active set, machine precision; serial only) end at the same positions within L tol d;
+  no creep: no centre moves more than L tol d between the end of settling and the end of the
+     run (10^3 or 10^4 steps);
+  bounded multipliers (Prop. 5): every contact force of the local array, at every 100th step,
+     is <= the weight of the bodies in the column above the contact (centres higher than the
+     contact point and within 2 d of it horizontally), i.e. no self-stress builds up in the
+     wall-to-wall rows (where the set of valid mu is not bounded: two opposite walls are
+     outside Lemma 1) and no multiplier drifts under warm start;
+  feasibility: f_hc[7] <= tol at every step; no solve stopped at maxiter; no lost atom.
+Also serial vs 2 ranks (np 2 registration): same checks (the comparison runs are per rank
+count)."""
+
+import math
+import sys
+from pathlib import Path
+
+import numpy as np
+
+import lammps_run as lr
+import stability_common as sc
+
+R = 0.5
+D = 2 * R
+G = 1.0
+H = 0.01
+TOL = 1e-6
+GAP = 0.02
+NSETTLE = 500
+VARIANTS = {
+    "apgd_warm": "solver apgd warmstart yes",
+    "apgd_cold": "solver apgd warmstart no",
+    "uzawa_warm": "solver uzawa warmstart yes",
+    "exact": "solver exact",    # machine precision, one processor: the reference
+}
+
+
+def geometry(dim):
+    if dim == 2:
+        ncol, nrow = 10, 12
+        x0 = sc.hex_lattice_2d(ncol, nrow, R, GAP)
+        ideal = sc.hex_lattice_2d(ncol, nrow, R, 0.0)
+        width = D * ncol
+        top = x0[:, 1].max() + 5.0
+        box = ((0.0, width), (0.0, top), (-0.5, 0.5))
+        walls = "wall xplane 0.0 %r wall yplane 0.0 %r" % (width, top)
+        return x0, ideal, box, walls, nrow, "f f p"
+    n, nlayer = 4, 7
+    x0 = sc.fcc_lattice(n, nlayer, R, GAP)
+    ideal = sc.fcc_lattice(n, nlayer, R, 0.0)
+    width = D * n
+    top = x0[:, 2].max() + 5.0
+    box = ((0.0, width), (0.0, width), (0.0, top))
+    walls = "wall xplane 0.0 %r wall yplane 0.0 %r wall zplane 0.0 %r" % (width, width, top)
+    return x0, ideal, box, walls, nlayer, "f f f"
+
+
+def column_weight_bound(x, mass, dim, rows):
+    """For each contact row [i, j, f, nx, ny, nz, wall] the weight G sum m of the column above
+    it: the bodies whose centre is higher than (contact point - r), i.e. the contact's own
+    bodies and everything above them, and within 2 d of it horizontally."""
+    up = 1 if dim == 2 else 2
+    hor = [0] if dim == 2 else [0, 1]
+    out = []
+    for i, j, _, nx, ny, nz, _w in rows:
+        xi = x[i - 1]
+        n = np.array([nx, ny, nz])
+        c = xi + R * n    # the contact point (from i towards j or the wall)
+        above = x[:, up] >= c[up] - R - 1e-9    # the contact's own bodies and all above
+        near = np.sqrt(((x[:, hor] - c[hor]) ** 2).sum(axis=1)) <= 2 * D
+        out.append(G * float(mass[above & near].sum()))
+    return np.array(out)
+
+
+def test():
+    argv = list(sys.argv[1:])
+    dim, nsteps, variants = 2, 1000, list(VARIANTS)
+    for opt in ("--dim", "--steps", "--variants"):
+        if opt in argv:
+            k = argv.index(opt)
+            val = argv[k + 1]
+            del argv[k:k + 2]
+            if opt == "--dim":
+                dim = int(val)
+            elif opt == "--steps":
+                nsteps = int(val)
+            else:
+                variants = val.split(",")
+    args = lr.test_args(__doc__, argv)
+    x0, ideal, box, walls, layers, boundary = geometry(dim)
+    natoms = len(x0)
+    data = Path(args.workdir) / "data.crystal"
+    sc.write_data(data, box, R, 1.0, x0)
+    total = NSETTLE + nsteps
+    bound_pos = layers * TOL * D
+    bound_v = 10 * TOL * D / H
+    finals = {}
+    chk = sc.Checks()
+    for name in variants:
+        label = "%dd crystal (%d bodies, %s)" % (dim, natoms, name)
+        text = sc.deck("data.crystal", total, H, 0.3, "tol %g %s %s" % (TOL, VARIANTS[name], walls),
+                       dim=dim, boundary=boundary, gravity=G, dump_every=100, local_every=100)
+        res, th = sc.run(args, text, "%s/%s" % (args.workdir, name), data)
+        ov = sc.check_common(th, natoms, TOL, label, check=chk)
+
+        frames = [f for f in lr.read_dump(res.path("dump.atoms")) if f.timestep >= NSETTLE]
+        local = {f.timestep: f for f in lr.read_dump_local(res.path("dump.local"))}
+        vmax = max(float(np.linalg.norm(sc.velocities(f), axis=1).max()) for f in frames)
+        chk(vmax <= bound_v, "%s: at rest after settling: max |v| %.3g <= 10 tol d / h = %.3g"
+                 % (label, vmax, bound_v))
+        x_settled = sc.positions(frames[0])
+        x_end = sc.positions(frames[-1])
+        dev = float(np.linalg.norm(x_end - ideal, axis=1).max())
+        chk(dev <= bound_pos, "%s: the ideal crystal: max |x - site| %.3g <= L tol d = %.3g"
+                 % (label, dev, bound_pos))
+        creep = max(float(np.linalg.norm(sc.positions(f) - x_settled, axis=1).max()) for f in frames)
+        chk(creep <= bound_pos, "%s: no creep over %d steps: max |x(t) - x(%d)| %.3g <= %.3g"
+                 % (label, nsteps, NSETTLE, creep, bound_pos))
+        mass = frames[0].columns["mass"]
+        worst_ratio, worst_row, worst_step, fmax = 0.0, None, None, []
+        for f in frames:
+            lf = local.get(f.timestep)
+            chk(lf is not None, "%s: dump local frame at step %d" % (label, f.timestep))
+            if lf is None:
+                continue
+            cols = [lf.columns["f_hc[%d]" % k] for k in range(1, 8)]
+            rows = [[int(cols[0][r]), int(cols[1][r])] + [float(cols[k][r]) for k in range(2, 6)]
+                    + [int(cols[6][r])] for r in range(len(cols[0]))]
+            forces = np.array([r_[2] for r_ in rows])
+            fmax.append(float(forces.max()))
+            ratio = forces / column_weight_bound(sc.positions(f), mass, dim, rows)
+            k = int(np.argmax(ratio))
+            if ratio[k] > worst_ratio:
+                worst_ratio, worst_row, worst_step = float(ratio[k]), rows[k], f.timestep
+        chk(worst_ratio <= 1.0,
+            "%s: bounded multipliers: every contact force of every 100th step <= the weight of "
+            "the column above it: largest ratio %.3g (step %s, row [i, j, force, normal, wall] "
+            "%s)" % (label, worst_ratio, worst_step, worst_row))
+        tail = fmax[-max(1, len(fmax) // 10):]
+        chk(max(tail) <= 1.25 * fmax[0],
+            "%s: no multiplier drift: largest contact force over the last tenth of the run "
+            "%.4g <= 1.25 x its value after settling %.4g" % (label, max(tail), fmax[0]))
+        finals[name] = x_end
+        sc.report("crystal_%dd_np%d_%s" % (dim, args.np, name), bodies=natoms, steps=nsteps,
+                  overlap=ov, vmax=vmax, dev_ideal=dev, creep=creep, force_over_column=worst_ratio, fmax_settled=fmax[0], fmax_end=fmax[-1],
+                  active_contacts=int(th["f_hc[4]"][-1]), dof=dim * natoms,
+                  max_iter_settled=int(th["f_hc[1]"][NSETTLE:].max()),
+                  mean_iter_settled=float(th["f_hc[1]"][NSETTLE:].mean()),
+                  seconds=round(res.seconds, 1))
+    names = list(finals)
+    for a in names[1:]:
+        diff = float(np.linalg.norm(finals[a] - finals[names[0]], axis=1).max())
+        chk(diff <= bound_pos, "%dd crystal: %s and %s end at the same positions: max diff "
+                 "%.3g <= L tol d = %.3g" % (dim, names[0], a, diff, bound_pos))
+        sc.report("crystal_%dd_np%d_unique_%s_vs_%s" % (dim, args.np, names[0], a), diff=diff)
+    chk.finish()
+
+
+if __name__ == "__main__":
+    lr.main(test)
