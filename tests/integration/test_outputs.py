@@ -23,7 +23,7 @@ or under mpirun (--np). Five scenes, each from a deterministic data file or fixe
     round-off (Prop. 4 / Remark 10 of the paper). KE should not grow much either: with uzawa
     and warm start (the default) it does (a known bug, enforced only with --known-bugs).
 (d) initial overlaps: pairs of unit spheres overlapping by 20% of the diameter.
-    * at rest, no force: a WARNING about overlapping spheres; nothing moves, KE stays 0, the
+    * at rest, no force: a WARNING about overlapping spheres; KE stays bounded and stops growing, the
       overlap stays 0.2;
     * under gravity on a floor (one pair stacked, one side by side): the overlap shrinks every
       step to zero, and KE stays of order m (g h)^2 per atom (below it);
