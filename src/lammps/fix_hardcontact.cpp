@@ -128,8 +128,8 @@ void FixHardContact::parse_keywords(int narg, char **arg)
         error->all(FLERR, "Fix hardcontact maxiter: expected an integer, got '{}'", arg[iarg + 1]);
       const bigint maxiter = utils::bnumeric(FLERR, arg[iarg + 1], false, lmp);
       if (maxiter < 1 || maxiter > MAXSMALLINT)
-        error->all(FLERR, "Fix hardcontact maxiter must be between 1 and {}, got {}", MAXSMALLINT,
-                   arg[iarg + 1]);
+        error->all(FLERR, "Fix hardcontact maxiter must be at least 1 and at most {}, got {}",
+                   MAXSMALLINT, arg[iarg + 1]);
       settings_.maxiter = static_cast<int>(maxiter);
       iarg += 2;
     } else if (keyword == "rho") {
