@@ -205,7 +205,7 @@ CASES = [
          ["does not support run_style respa", "use verlet"]),
     # skin: the message names the skin to use (and that skin works, see check_skin_advice)
     case("skin_too_small", SKIN_DECK,
-         ["more than half the skin", "use 'neighbor", "bin'"], np4=True),
+         ["together more than the skin", "use 'neighbor", "bin'"], np4=True),
 ]
 
 
