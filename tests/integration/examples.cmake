@@ -25,3 +25,7 @@ hardcontact_deck_test(NAME example_disc_packing SCRIPT integration/test_example_
 # hopper: 2d silo on a floor of frozen discs, 480 discs drain through 8 and 12 mm outlets
 hardcontact_deck_test(NAME example_hopper SCRIPT integration/test_example_hopper.py
                       NP 1 LABELS examples TIMEOUT 240)
+
+# cluster_impact (the flagship, paper 6.3): 6 steps of the 2000-disc impact at h = 0.1
+hardcontact_deck_test(NAME example_cluster_impact SCRIPT integration/test_example_cluster_impact.py
+                      NP 1 LABELS examples TIMEOUT 300)
