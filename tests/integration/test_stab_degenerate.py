@@ -8,10 +8,11 @@ Cases (all default tol 1e-4 unless said, each its own deck, --cases to pick):
   coincident:      two spheres at exactly the same point (one at rest, one moving (0, 1, 0)),
                    and three more at another common point with velocities (1,0,0), (0,0,1), 0;
                    no force, h = 0.05, 200 steps: the normal of a pair at distance 0 is
-                   undefined (the fix picks +-x by atom ID); they must separate without NaN;
-  coincident_rest: two coincident spheres and everything at rest, no force: documented to stay
-                   as they are (the overlap is pushed apart no faster than the fastest free
-                   speed, here 0): nothing moves, nothing becomes NaN;
+                   undefined (the fix picks +-x by atom ID); they must separate (all-pairs
+                   overlap <= tol in some dump by step 200) without NaN;
+  coincident_rest: the same five spheres, everything at rest, no force: doc/fix_hardcontact.md
+                   ("Overlaps at the start of a step"): "With no force at all, larger overlaps
+                   stay as they are and do not grow": nothing moves, KE stays 0, no NaN;
   walls_touching:  spheres touching the floor and a side wall exactly (centres at r), some
                    also touching each other, sliding along the walls (|v| up to 1) under gravity
                    in a closed box of walls, 300 steps of h = 0.02;
@@ -21,7 +22,9 @@ Cases (all default tol 1e-4 unless said, each its own deck, --cases to pick):
   chain:           200 spheres of radius 1e-3 touching in a row along x (centres near x = 1:
                    coordinates 500 times the size), the first one moving at 1 into the row,
                    h = 1e-3, 100 steps: all end moving together at m v / M (sticky,
-                   restitution 0), in order;
+                   restitution 0) within N tol d / h (a solve may leave each of the N
+                   contacts off by tol d in predicted gap, i.e. tol d / h in velocity), in
+                   order;
   chain_wall:      the same row touching `wall xplane NULL <end>` exactly: everything stops.
 Asserted in every case: no lost atom, every thermo and dump value finite, no solve at maxiter,
 f_hc[7] <= tol at every step except where the case starts overlapping (coincident*), all-pairs
