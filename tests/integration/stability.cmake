@@ -36,7 +36,7 @@ hardcontact_deck_test(NAME stab_crystal_2d_np2 SCRIPT integration/test_stab_crys
 hardcontact_deck_test(NAME stab_polydisperse_np1 SCRIPT integration/test_stab_polydisperse.py NP 1
   LABELS stability ARGS --timeout 120 TIMEOUT 300)
 hardcontact_deck_test(NAME stab_polydisperse_np2 SCRIPT integration/test_stab_polydisperse.py NP 2
-  LABELS "stability;soak" ARGS --timeout 300 TIMEOUT 700)
+  LABELS stability ARGS --timeout 120 TIMEOUT 300)
 
 # deep piles: a 40-row disordered 2d pile and a 60-sphere column; in CI the default solver on
 # both, and on the column the paper's uzawa and the exact reference; soak: 2 x 10^4 steps each
