@@ -63,6 +63,8 @@ SolveReport Apgd::solve(const ContactProblem &p, const SolverSettings &s, Distri
       // gradient steps. One extra product gives g(y) on the grown set.
       for (const int c : set_.rows()) g_[c] = p.predicted_gap(c, u);    // u = u(mu)
       gaps(y_, gy_);
+      // back to u = u(mu): the next check and the answer must see the iterate, not y
+      velocities_from_multipliers(p, set_.rows(), mu, u, ops);
       if (k >= s.maxiter) break;
       continue;
     }
@@ -88,7 +90,14 @@ SolveReport Apgd::solve(const ContactProblem &p, const SolverSettings &s, Distri
       ops.sum_all(sums, 5);
       const double slack = 1e-12 * (std::abs(sums[0]) + std::abs(sums[1]));
       if (sums[1] <= sums[0] + sums[2] + 0.5 * L * sums[3] + slack) break;
+      // A step too small to change anything cannot fail the test for a real reason (round-off
+      // in phi): accept it rather than let L run away.
+      if (!(L < 1e300) || sums[3] == 0.0) break;
       L *= 2.0;
+    }
+    if (!(L < 1e300)) {    // the estimate broke down: report the iterate, unconverged
+      velocities_from_multipliers(p, set_.rows(), mu, u, ops);
+      break;
     }
 
     // Nesterov momentum, dropped when it points uphill (gradient restart).
