@@ -1,0 +1,68 @@
+#!/usr/bin/env bash
+# Accuracy versus time of fix hardcontact: every solver x tolerance x warm start on piles of 10,
+# 30 and 100 layers, a hexagonal crystal, the paper's 6.3 cluster impact and a pour, against
+# solver exact and against soft spheres (gran/hertz/history). Regenerates
+# doc/accuracy-vs-time.md, doc/figures/accuracy_*.png and bench/results/*.csv.
+#
+#   bench/run_accuracy.sh [--quick]
+#
+# --quick: smaller scenes, tolerances 1e-2..1e-6, short windows (a few minutes; for
+# development). The full run takes about 30-40 minutes on 2 cores when the machine is idle.
+# Environment: HARDCONTACT_LMP (default build/lmp_hardcontact), HARDCONTACT_SOURCE_DESC (what
+# that launcher was built from, for the report; default: this tree's commit), SOFT_LMP (default /usr/bin/lmp),
+# BENCH_WORKDIR (scratch, default bench/work: data files, logs, dumps; not committed),
+# BENCH_WAIT_LOAD=N: wait up to N seconds for the 1-minute load average to drop below 1.
+set -euo pipefail
+ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+PY=/usr/bin/python3
+MODE=full
+QUICK=()
+if [ "${1:-}" = "--quick" ]; then MODE=quick; QUICK=(--quick); shift; fi
+[ $# -eq 0 ] || { echo "usage: $0 [--quick]" >&2; exit 2; }
+LMP="${HARDCONTACT_LMP:-$ROOT/build/lmp_hardcontact}"
+SOFT_LMP="${SOFT_LMP:-/usr/bin/lmp}"
+[ -x "$LMP" ] || { echo "no $LMP: build first (bash .ci/build.sh) or set HARDCONTACT_LMP" >&2; exit 1; }
+[ -x "$SOFT_LMP" ] || { echo "no $SOFT_LMP (Debian package lammps): set SOFT_LMP" >&2; exit 1; }
+WORK="${BENCH_WORKDIR:-$ROOT/bench/work}/$MODE"
+RESULTS="$ROOT/bench/results"
+mkdir -p "$WORK" "$RESULTS"
+
+load1() { cut -d' ' -f1 /proc/loadavg; }
+if [ -n "${BENCH_WAIT_LOAD:-}" ]; then
+  waited=0
+  while awk -v l="$(load1)" 'BEGIN{exit !(l >= 1.0)}' && [ "$waited" -lt "$BENCH_WAIT_LOAD" ]; do
+    echo "load $(load1) >= 1: waiting ($waited s of $BENCH_WAIT_LOAD)"; sleep 30; waited=$((waited + 30))
+  done
+fi
+
+T0=$SECONDS
+LOAD_BEFORE="$(cut -d' ' -f1-3 /proc/loadavg)"
+"$PY" "$ROOT/bench/accuracy/run.py" "${QUICK[@]}" --lmp "$LMP" --soft-lmp "$SOFT_LMP" \
+  --work "$WORK" --results "$RESULTS"
+LOAD_AFTER="$(cut -d' ' -f1-3 /proc/loadavg)"
+
+LAMMPS_VERSION="$(echo "info" | "$SOFT_LMP" 2>/dev/null | sed -n 's/^LAMMPS (\(.*\))$/\1/p' | head -1)"
+# What the launcher was built from: HARDCONTACT_SOURCE_DESC if set (e.g. a build of an
+# exported commit), else this tree's commit (+ a note when src/ or cmake/ have local changes).
+GIT="${HARDCONTACT_SOURCE_DESC:-}"
+if [ -z "$GIT" ]; then
+  GIT="$(cd "$ROOT" && git rev-parse --short HEAD 2>/dev/null || echo unknown)"
+  if [ -n "$(cd "$ROOT" && git status --porcelain --untracked-files=no -- src cmake CMakeLists.txt 2>/dev/null)" ]; then
+    GIT="$GIT + uncommitted changes in src/ or cmake/"
+  fi
+fi
+"$PY" - "$RESULTS/machine.json" <<PYEOF
+import json, os, sys, time
+cpu = "?"
+for line in open("/proc/cpuinfo"):
+    if line.startswith("model name"):
+        cpu = line.split(":", 1)[1].strip()
+        break
+json.dump(dict(mode="$MODE", date=time.strftime("%Y-%m-%d %H:%M %Z"), nproc=os.cpu_count(), cpu=cpu,
+               load_before="$LOAD_BEFORE", load_after="$LOAD_AFTER", lammps="$LAMMPS_VERSION",
+               git="$GIT", launcher="$LMP", minutes=($SECONDS - $T0) / 60.0),
+          open(sys.argv[1], "w"), indent=1)
+PYEOF
+"$PY" "$ROOT/bench/accuracy/report.py" --results "$RESULTS" --doc "$ROOT/doc/accuracy-vs-time.md" \
+  --figures "$ROOT/doc/figures"
+echo "accuracy benchmark ($MODE): $(( (SECONDS - T0) / 60 )) min; doc/accuracy-vs-time.md"
