@@ -48,7 +48,8 @@ def hard(scene, start, solver, tol, warm, lead, window, cap, maxiter=10000, chec
     halt = "fix             halt all halt 1 tlimit > %r error soft message no\n"
     if lead:
         text += halt % float(lead_cap or cap)
-        text += "thermo          %d\nrun             %d\nunfix           halt\n" % (lead, lead)
+        # a soft halt leaves the timer expired, which would skip every later run
+        text += "thermo          %d\nrun             %d\nunfix           halt\ntimer           timeout off\n" % (lead, lead)
     text += halt % float(cap)
     if gapdump_every:
         text += ("dump            ga all custom %d gap.dump id radius x y vx vy\n"

@@ -106,12 +106,16 @@ def fig_overlap(matrix, soft, scenes, out):
         if pts:
             fr = pareto(pts)
             ax.loglog([pts[i][0] for i in fr], [pts[i][1] for i in fr], "k--", lw=1, zorder=0)
-        sp = [r for r in soft if r["scene"] == s and r.get("final", 1) == 1]
+        sp = [r for r in soft if r["scene"] == s and r.get("final", 1) == 1 and r["overlap_rel_max"] > 0]
         if sp:
             sp = sorted(sp, key=lambda r: r["overlap_rel_max"])
-            xs = [r["overlap_rel_max"] for r in sp if r["overlap_rel_max"] > 0]
-            ys = [r[T("t_phys")] for r in sp if r["overlap_rel_max"] > 0]
-            ax.loglog(xs, ys, "x-", color="tab:red", ms=8, lw=1)
+            full = [r for r in sp if not str(r.get("note", "")).startswith("window")]
+            win = [r for r in sp if str(r.get("note", "")).startswith("window")]
+            ax.loglog([r["overlap_rel_max"] for r in full], [r[T("t_phys")] for r in full], "x-",
+                      color="tab:red", ms=8, lw=1)
+            if win:
+                ax.loglog([r["target_overlap"] for r in win], [r[T("t_phys")] for r in win], "D",
+                          color="tab:red", mfc="none", ms=6)
         ax.set_title(TITLE.get(s, s) + " (h = %g s)" % h, fontsize=10)
         ax.set_xlabel("largest overlap / contact size (max over the window)", fontsize=8)
         ax.set_ylabel("wall s per simulated s", fontsize=8)
@@ -123,7 +127,9 @@ def fig_overlap(matrix, soft, scenes, out):
     handles += [plt.Line2D([], [], marker="o", color="gray", mfc="none", ls="none", label="warmstart no"),
                 plt.Line2D([], [], marker="*", color="k", mfc="none", ms=12, ls="none", label="default (apgd 1e-4 warm)"),
                 plt.Line2D([], [], color="k", ls="--", label="Pareto front (hardcontact)"),
-                plt.Line2D([], [], color="tab:red", marker="x", label="soft spheres (gran/hertz/history, dt = t_c/50)")]
+                plt.Line2D([], [], color="tab:red", marker="x", label="soft spheres (gran/hertz/history, dt = t_c/50)"),
+                plt.Line2D([], [], color="tab:red", marker="D", mfc="none", ls="none",
+                           label="soft, timed on a window, at its target overlap")]
     fig.legend(handles=handles, loc="lower center", ncol=4, fontsize=8, frameon=False)
     fig.tight_layout(rect=(0, 0.06, 1, 1))
     fig.savefig(str(out), dpi=72)
@@ -457,7 +463,7 @@ def build_doc(res, figdir_rel, meta, matrix, soft, scenes, slide, figs):
                     cells = []
                     for p in piles:
                         q = byL.get(int(p[4:]))
-                        cells.append("-" if q is None else ("%.0f%s" % (q[1], " (maxiter)" if q[2] > 0 else "")))
+                        cells.append("-" if q is None or q[1] != q[1] else ("%.0f%s" % (q[1], " (maxiter)" if q[2] > 0 else "")))
                     sl = slope(pts)
                     w("| %g | %s | %s | %s | %s |" % (tol, solver, warm, " | ".join(cells), fmt(sl, "%.2f")))
         w("")
@@ -547,6 +553,24 @@ def summary(matrix, soft, scenes, tols):
             parts.append("%s (maxiter from tol %g)" % (s, t) if hits else "%s (skipped from tol %g)" % (s, max(r["tol"] for r in sk)))
     if parts:
         w("- uzawa stops at maxiter = 10000 (or was skipped after doing so) on: %s." % ", ".join(parts))
+    # velocity error of one step at the default, piles
+    parts = []
+    for s in present:
+        r = find(matrix, s, "apgd", "yes", 1e-4)
+        c = find(matrix, s, "apgd", "no", 1e-4)
+        if r and num(r, "vel_err") is not None and c and num(c, "vel_err") is not None:
+            parts.append("%s %.1e (cold start %.1e)" % (s, r["vel_err"], c["vel_err"]))
+    if parts:
+        w("- Velocity error of one step at the default (apgd, tol 1e-4, warm start; max |v - v_exact| "
+          "/ max |u_free|): %s." % "; ".join(parts))
+    # unconverged solves: overlap far beyond the residual
+    bad = [r for r in matrix if ok(r) and r["maxiter_hits"] > 0 and num(r, "overlap_rel_max") is not None
+           and num(r, "residual_max") is not None and r["overlap_rel_max"] > 100 * max(r["tol"], r["residual_max"])]
+    if bad:
+        b = max(bad, key=lambda r: r["overlap_rel_max"])
+        w("- Runs whose solves stopped at maxiter can show overlaps far beyond the residual: %d runs, "
+          "worst %s on %s (overlap %.2g of the contact size with the final residual at most %.2g; "
+          "see the remarks)." % (len(bad), label(b), b["scene"], b["overlap_rel_max"], b["residual_max"]))
     # throughput
     rates = [r for r in matrix if ok(r) and num(r, "row_iter_rate") and r["iter_mean"] >= 50
              and (r["scene"].startswith("pile") or r["scene"] == "crystal")]
@@ -569,7 +593,10 @@ def summary(matrix, soft, scenes, tols):
             continue
         hp = r.get(T("hard_t_phys"))
         if isinstance(hp, float) and hp > 0:
-            parts.append("%s at %.0e: %.2gx" % (r["scene"], r["target_overlap"], r[T("t_phys")] / hp))
+            reached = 0.5 <= r["overlap_rel_max"] / r["target_overlap"] <= 2.0
+            win = str(r.get("note", "")).startswith("window")
+            parts.append("%s at %.0e: %.2gx%s" % (r["scene"], r["target_overlap"], r[T("t_phys")] / hp,
+                                                  " (window)" if win else ("" if reached else " (soft overlap %.1e: not matched)" % r["overlap_rel_max"])))
     if parts:
         w("- Soft spheres at the same largest overlap need this many times the wall time of "
           "hardcontact (apgd, warm start) per simulated second: %s (see the soft-sphere table "

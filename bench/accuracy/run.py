@@ -46,13 +46,13 @@ def config(quick):
         tols=[1e-2, 1e-4, 1e-6, 1e-8, 1e-10],
         scenes=[
             dict(make=lambda: scenes.pile(10), settle=(460, 150, 20), lead=10, window=100),
-            dict(make=lambda: scenes.pile(30), settle=(580, 200, 20), lead=10, window=60),
-            dict(make=lambda: scenes.pile(100), settle=(1000, 300, 20), lead=10, window=30),
+            dict(make=lambda: scenes.pile(30), settle=(580, 200, 20), lead=10, window=80),
+            dict(make=lambda: scenes.pile(100), settle=(1000, 300, 20), lead=10, window=40),
             dict(make=lambda: scenes.crystal(30, 30), settle=(0, 0, 20), lead=10, window=60),
             dict(make=lambda: scenes.cluster(0.4), probe=3, lead=0, window=12),
             dict(make=lambda: scenes.pour(400), probe=170, lead=0, window=300),
         ],
-        cap=20.0, exact_cap=300.0, soft_levels=[1e-2, 1e-4, 1e-6, 1e-8], soft_cap=120.0,
+        cap=40.0, exact_cap=300.0, soft_levels=[1e-2, 1e-4, 1e-6, 1e-8], soft_cap=120.0,
         soft_settle_per_layer=90, soft_window=2500, pour_full_max_steps=4e5,
         pour_window_steps=60000, slide_h=[1e-4, 3e-4, 1e-3, 3e-3, 1e-2], slide_steps=200)
 
