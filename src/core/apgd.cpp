@@ -20,7 +20,7 @@ SolveReport Apgd::solve(const ContactProblem &p, const SolverSettings &s, Distri
   mu.resize(nc, 0.0);
   for (double &m : mu) m = std::max(0.0, m);    // a start below 0 is no contact force
   for (auto *v : {&b_, &g_, &y_, &gy_, &next_, &gnext_}) v->assign(nc, 0.0);
-  set_.init(p, mu);
+  set_.init(p, mu, s.tol, ops);
 
   velocities_from_multipliers(p, std::vector<int>(), mu, u, ops);    // u = u_free
   for (int c = 0; c < nc; ++c) b_[c] = p.predicted_gap(c, u);
@@ -49,10 +49,10 @@ SolveReport Apgd::solve(const ContactProblem &p, const SolverSettings &s, Distri
 
   for (int k = 0;; ++k) {
     double r = 0.0;
-    for (const int c : set_.rows()) r = std::max(r, row_violation(g_[c], mu[c], p.size[c]));
+    for (const int c : set_.rows()) r = std::max(r, set_.violation(c, g_[c], mu[c]));
     report.residual = ops.max_all(r);
     report.iterations = k;
-    const auto verdict = set_.check(k, report.residual, s.tol, p, u, ops);
+    const auto verdict = set_.check(k, report.residual, s.tol, p, mu, u, ops);
     if (verdict == WorkingSet::Verdict::Converged) {
       report.converged = true;
       break;
@@ -118,7 +118,8 @@ SolveReport Apgd::solve(const ContactProblem &p, const SolverSettings &s, Distri
   }
   report.rho = L > 0.0 ? 1.0 / L : 0.0;
   // An unconverged answer reports its violation over every row, inside the working set or not.
-  if (!report.converged) report.residual = residual(p, mu, u, ops);
+  if (!report.converged) report.residual = residual(p, mu, u, set_.scales(), ops);
+  report.speed_scale = set_.speed_scale();
   return report;
 }
 

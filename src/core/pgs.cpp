@@ -13,7 +13,7 @@ SolveReport Pgs::solve(const ContactProblem &p, const SolverSettings &s, Distrib
   const int nc = p.n_contacts();
   mu.resize(nc, 0.0);
   for (double &m : mu) m = std::max(0.0, m);    // a start below 0 is no contact force
-  set_.init(p, mu);
+  set_.init(p, mu, s.tol, ops);
   velocities_from_multipliers(p, set_.rows(), mu, u, ops);
   const double h2 = p.h * p.h;
 
@@ -40,10 +40,10 @@ SolveReport Pgs::solve(const ContactProblem &p, const SolverSettings &s, Distrib
   for (int k = 0;; ++k) {
     double r = 0.0;
     for (const int c : set_.rows())
-      r = std::max(r, row_violation(p.predicted_gap(c, u), mu[c], p.size[c]));
+      r = std::max(r, set_.violation(c, p.predicted_gap(c, u), mu[c]));
     report.residual = ops.max_all(r);
     report.iterations = k;
-    const auto verdict = set_.check(k, report.residual, s.tol, p, u, ops);
+    const auto verdict = set_.check(k, report.residual, s.tol, p, mu, u, ops);
     if (verdict == WorkingSet::Verdict::Converged) {
       report.converged = true;
       break;
@@ -86,7 +86,8 @@ SolveReport Pgs::solve(const ContactProblem &p, const SolverSettings &s, Distrib
     }
     ops.forward(u.data()->data(), 3);
   }
-  if (!report.converged) report.residual = residual(p, mu, u, ops);
+  if (!report.converged) report.residual = residual(p, mu, u, set_.scales(), ops);
+  report.speed_scale = set_.speed_scale();
   return report;
 }
 

@@ -1,16 +1,56 @@
 #include "residual.h"
 
 #include <algorithm>
+#include <cmath>
 
 namespace hardcontact {
 
+double free_speed_scale(const ContactProblem &p, DistributedOps &ops)
+{
+  double v = 0.0;
+  const int nc = p.n_contacts();
+  for (int c = 0; c < nc; ++c) {
+    const int j = p.body_j[c];
+    const Vec3 du = (j >= 0 ? p.u_free[j] : Vec3::Zero()) - p.u_free[p.body_i[c]];
+    v = std::max(v, std::abs(p.normal[c].dot(du)));
+  }
+  return ops.max_all(v);
+}
+
 double residual(const ContactProblem &p, const std::vector<double> &mu,
-                const std::vector<Vec3> &u, DistributedOps &ops)
+                const std::vector<Vec3> &u, const std::vector<double> &scale,
+                DistributedOps &ops)
 {
   double r = 0.0;
   const int nc = p.n_contacts();
-  for (int c = 0; c < nc; ++c) r = std::max(r, row_violation(p.predicted_gap(c, u), mu[c], p.size[c]));
+  for (int c = 0; c < nc; ++c) r = std::max(r, row_violation(p.predicted_gap(c, u), mu[c], scale[c]));
   return ops.max_all(r);
+}
+
+bool energy_within_bound(const ContactProblem &p, const std::vector<double> &mu,
+                         const std::vector<Vec3> &u, DistributedOps &ops)
+{
+  // sums: gain of kinetic energy, kinetic energy of u_free, allowed work (each body and each
+  // row counted once over all processes)
+  double sums[3] = {0.0, 0.0, 0.0};
+  for (int b = 0; b < p.n_owned; ++b) {
+    if (p.inv_mass[b] <= 0.0) continue;    // an obstacle: u = u_free
+    const double m = 1.0 / p.inv_mass[b];
+    sums[0] += 0.5 * m * (u[b] - p.u_free[b]).dot(u[b] + p.u_free[b]);
+    sums[1] += 0.5 * m * p.u_free[b].squaredNorm();
+  }
+  const int nc = p.n_contacts();
+  for (int c = 0; c < nc; ++c) {
+    if (!p.counted[c] || mu[c] <= 0.0) continue;
+    sums[2] += mu[c] * std::max(0.0, -p.gap[c]);
+    // round-off: the kinetic energy of moving the pair kGapRoundoff size apart in one step
+    const int i = p.body_i[c], j = p.body_j[c];
+    const double w = p.inv_mass[i] + (j >= 0 ? p.inv_mass[j] : 0.0);
+    const double v = kGapRoundoff * p.size[c] / p.h;
+    if (w > 0.0) sums[2] += 0.5 * v * v / w;
+  }
+  ops.sum_all(sums, 3);
+  return sums[0] <= sums[2] + kEnergyRoundoff * sums[1];
 }
 
 }    // namespace hardcontact

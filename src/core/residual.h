@@ -1,4 +1,12 @@
 // The stopping criterion shared by every solver, so that they compare fairly.
+//
+// Each row's violation of the complementarity conditions (eq. 17-18) is measured against a
+// length scale s_c = min(size_c, h V): the contact size r_i + r_j, or, when the fastest free
+// relative approach speed V of the step covers less than a size in one step, the distance h V
+// it covers. A gap error e of one row is a relative velocity error e / h; measured against h V
+// it is a velocity error relative to V. Against the size alone, small steps would accept
+// velocity errors of tol size / h, which feed energy into resting contacts (Prop. 3) and add
+// up along chains of contacts.
 #pragma once
 
 #include "contact_problem.h"
@@ -8,17 +16,43 @@
 
 namespace hardcontact {
 
-// Violation of the complementarity conditions (eq. 17-18) by row c, in units of its size:
-// the predicted overlap max(0, -g)/size, and for a pushing row (mu > 0) also the predicted
-// gap |g|/size that its force should have closed. 0 exactly at the solution of eq. 15.
-inline double row_violation(double g, double mu, double size)
+// Gap errors below this fraction of the size are round-off in D_ij (a difference of
+// coordinates): the scale never asks for less.
+constexpr double kGapRoundoff = 1.0e-12;
+// Relative round-off of a kinetic energy summed over bodies.
+constexpr double kEnergyRoundoff = 1.0e-14;
+
+// Violation of the complementarity conditions by row c, in units of its scale: the predicted
+// overlap max(0, -g)/scale, and for a pushing row (mu > 0) also the predicted gap |g|/scale
+// that its force should have closed. 0 exactly at the solution of eq. 15.
+inline double row_violation(double g, double mu, double scale)
 {
   const double v = mu > 0.0 ? (g < 0.0 ? -g : g) : (g < 0.0 ? -g : 0.0);
-  return v / size;
+  return v / scale;
+}
+
+// V: the largest |n_c . (u_free_j - u_free_i)| over all rows of all processes (u_wall = 0).
+double free_speed_scale(const ContactProblem &p, DistributedOps &ops);
+
+// s_c = min(size_c, h V), and never below kGapRoundoff size_c / tol.
+inline double row_scale(double size, double h, double speed_scale, double tol)
+{
+  const double s = h * speed_scale < size ? h * speed_scale : size;
+  const double floor = kGapRoundoff * size / tol;
+  return s > floor ? s : (floor < size ? floor : size);
 }
 
 // Largest row_violation over all rows of all processes.
 double residual(const ContactProblem &p, const std::vector<double> &mu,
-                const std::vector<Vec3> &u, DistributedOps &ops);
+                const std::vector<Vec3> &u, const std::vector<double> &scale,
+                DistributedOps &ops);
+
+// Prop. 3 for an inexact solve. With A = h^2 G M^-1 G^T and g(mu) = D + h G u(mu),
+//   1/2 |u(mu)|_M^2 - 1/2 |u_free|_M^2 = mu.g(mu) - mu.D - 1/2 mu.A mu,
+// so the exact solution (mu.g = 0) never gains kinetic energy beyond the work mu.max(0, -D) of
+// clearing overlaps present at q^n (none when D >= 0: then 0 is in K_h). An iterate within the
+// row tolerance may: true when u gains at most that work plus round-off.
+bool energy_within_bound(const ContactProblem &p, const std::vector<double> &mu,
+                         const std::vector<Vec3> &u, DistributedOps &ops);
 
 }    // namespace hardcontact

@@ -12,7 +12,7 @@
 namespace hardcontact {
 
 struct SolverSettings {
-  double tol = 1.0e-4;    // stop when residual() <= tol (relative to contact size)
+  double tol = 1.0e-4;    // stop when residual() <= tol (relative to each row's scale, residual.h)
   int maxiter = 10000;    // cap on multiplier updates per solve
   double rho = 0.0;       // Uzawa step; 0 = from step_size_bound() each solve
 };
@@ -22,6 +22,7 @@ struct SolveReport {
   double residual = 0.0;
   bool converged = false;
   double rho = 0.0;    // step actually used (0 if the solver has none)
+  double speed_scale = 0.0;    // V of the row scales (residual.h)
 };
 
 class Solver {

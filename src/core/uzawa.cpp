@@ -15,7 +15,7 @@ SolveReport Uzawa::solve(const ContactProblem &p, const SolverSettings &s, Distr
   mu.resize(nc, 0.0);
   for (double &m : mu) m = std::max(0.0, m);    // a start below 0 is no contact force
   next_.resize(nc);
-  set_.init(p, mu);
+  set_.init(p, mu, s.tol, ops);
 
   SolveReport report;
   // rho = 1/L: inside (0, 2/L) with margin, and the exact one-step answer for an isolated pair.
@@ -32,12 +32,12 @@ SolveReport Uzawa::solve(const ContactProblem &p, const SolverSettings &s, Distr
     double r = 0.0;
     for (const int c : set_.rows()) {
       const double g = p.predicted_gap(c, u);
-      r = std::max(r, row_violation(g, mu[c], p.size[c]));
+      r = std::max(r, set_.violation(c, g, mu[c]));
       next_[c] = std::max(0.0, mu[c] - report.rho * g);
     }
     report.residual = ops.max_all(r);
     report.iterations = k;
-    const auto verdict = set_.check(k, report.residual, s.tol, p, u, ops);
+    const auto verdict = set_.check(k, report.residual, s.tol, p, mu, u, ops);
     if (verdict == WorkingSet::Verdict::Converged) {
       report.converged = true;
       break;
@@ -54,7 +54,8 @@ SolveReport Uzawa::solve(const ContactProblem &p, const SolverSettings &s, Distr
     velocities_from_multipliers(p, set_.rows(), mu, u, ops);    // u_{k+1} from mu_{k+1} (eq. 16)
   }
   // An unconverged answer reports its violation over every row, inside the working set or not.
-  if (!report.converged) report.residual = residual(p, mu, u, ops);
+  if (!report.converged) report.residual = residual(p, mu, u, set_.scales(), ops);
+  report.speed_scale = set_.speed_scale();
   return report;
 }
 

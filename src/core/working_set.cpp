@@ -1,12 +1,14 @@
 #include "working_set.h"
 
-#include "residual.h"
-
 namespace hardcontact {
 
-void WorkingSet::init(const ContactProblem &p, const std::vector<double> &mu)
+void WorkingSet::init(const ContactProblem &p, const std::vector<double> &mu, double tol,
+                      DistributedOps &ops)
 {
   const int nc = p.n_contacts();
+  speed_scale_ = free_speed_scale(p, ops);
+  scale_.resize(nc);
+  for (int c = 0; c < nc; ++c) scale_[c] = row_scale(p.size[c], p.h, speed_scale_, tol);
   rows_.clear();
   member_.assign(nc, 0);
   next_check_ = 1;
@@ -26,7 +28,7 @@ int WorkingSet::expand(const ContactProblem &p, const std::vector<Vec3> &u, doub
   const int nc = p.n_contacts();
   for (int c = 0; c < nc; ++c) {
     if (member_[c]) continue;
-    if (row_violation(p.predicted_gap(c, u), 0.0, p.size[c]) <= tol) continue;
+    if (violation(c, p.predicted_gap(c, u), 0.0) <= tol) continue;
     rows_.push_back(c);
     member_[c] = 1;
     ++added;
@@ -35,14 +37,15 @@ int WorkingSet::expand(const ContactProblem &p, const std::vector<Vec3> &u, doub
 }
 
 WorkingSet::Verdict WorkingSet::check(int k, double residual, double tol,
-                                      const ContactProblem &p, const std::vector<Vec3> &u,
-                                      DistributedOps &ops)
+                                      const ContactProblem &p, const std::vector<double> &mu,
+                                      const std::vector<Vec3> &u, DistributedOps &ops)
 {
   const bool scheduled = k == next_check_;
   if (residual > tol && !scheduled) return Verdict::Iterate;
   if (scheduled) next_check_ += next_check_ < 64 ? next_check_ : 64;
   if (ops.sum_all(expand(p, u, tol)) > 0.0) return Verdict::Grown;
-  return residual <= tol ? Verdict::Converged : Verdict::Iterate;
+  if (residual > tol) return Verdict::Iterate;
+  return energy_within_bound(p, mu, u, ops) ? Verdict::Converged : Verdict::Iterate;
 }
 
 }    // namespace hardcontact

@@ -7,6 +7,7 @@
 
 #include "contact_problem.h"
 #include "distributed_ops.h"
+#include "residual.h"
 
 #include <vector>
 
@@ -16,24 +17,34 @@ class WorkingSet {
  public:
   enum class Verdict { Iterate, Grown, Converged };
 
-  // The stopping test every solver shares, given the residual of the set at iteration k: at
-  // iterations 1, 2, 4, ..., then every 64, and whenever the set itself has converged, rows
-  // outside that the iterate violates join the set (Grown: the solver adapts and goes on).
-  // Converged: residual <= tol and nothing violated outside, i.e. eq. 15 holds everywhere.
+  // The stopping test every solver shares, given the residual of the set at iteration k
+  // (largest violation() over the set): at iterations 1, 2, 4, ..., then every 64, and
+  // whenever the set itself has converged, rows outside that the iterate violates join the set
+  // (Grown: the solver adapts and goes on). Converged: residual <= tol, nothing violated
+  // outside, i.e. eq. 15 holds everywhere to tol, and no kinetic energy gained beyond what
+  // the exact projection may gain (energy_within_bound, Prop. 3).
   Verdict check(int k, double residual, double tol, const ContactProblem &p,
-                const std::vector<Vec3> &u, DistributedOps &ops);
+                const std::vector<double> &mu, const std::vector<Vec3> &u, DistributedOps &ops);
 
-  // Rows with a start multiplier > 0, or whose gap the free relative speed closes in one step.
-  void init(const ContactProblem &p, const std::vector<double> &mu);
+  // Rows with a start multiplier > 0, or whose gap the free relative speed closes in one step;
+  // and the tolerance scale of every row (residual.h).
+  void init(const ContactProblem &p, const std::vector<double> &mu, double tol,
+            DistributedOps &ops);
   // Adds the rows outside the set that u violates by more than tol; returns how many (local).
   int expand(const ContactProblem &p, const std::vector<Vec3> &u, double tol);
 
   const std::vector<int> &rows() const { return rows_; }
   bool contains(int c) const { return member_[c] != 0; }
+  // Row c's violation in units of its scale, the quantity compared with tol.
+  double violation(int c, double g, double mu) const { return row_violation(g, mu, scale_[c]); }
+  const std::vector<double> &scales() const { return scale_; }
+  double speed_scale() const { return speed_scale_; }
 
  private:
   std::vector<int> rows_;
   std::vector<char> member_;
+  std::vector<double> scale_;
+  double speed_scale_ = 0.0;
   int next_check_ = 1;
 };
 

@@ -274,12 +274,12 @@ void FixHardContact::setup(int)
   build_candidates(0.0);
   overlap_diagnostics(0.0);
   diag_[ITERATIONS] = diag_[CANDIDATES] = diag_[ACTIVE] = diag_[RESIDUAL] = 0.0;
-  diag_[RHO] = diag_[ROUNDS] = 0.0;
+  diag_[RHO] = diag_[ROUNDS] = diag_[CLEARING_WORK] = 0.0;
   diag_[MAXITER_HITS] = static_cast<double>(maxiter_hits_);
   if (diag_[MAX_OVERLAP_RELATIVE] > settings_.tol && comm->me == 0)
     error->warning(FLERR, "Fix hardcontact: the run starts with overlapping spheres (largest "
                           "overlap {:.6g}, {:.3g} of the contact size); each step clears at most "
-                          "h x the velocity the forces give in one step, plus 2 tol x size, so "
+                          "h x the velocity the forces give in one step, plus 2 tol x its row scale, so "
                           "that no energy explodes (see the doc page)",
                    diag_[MAX_OVERLAP], diag_[MAX_OVERLAP_RELATIVE]);
   mu_.clear();

@@ -68,11 +68,13 @@ class FixHardContact : public Fix {
 
   // global vector output, see compute_vector()
   enum { ITERATIONS, MAX_OVERLAP, CANDIDATES, ACTIVE, RESIDUAL, MAXITER_HITS,
-         MAX_OVERLAP_RELATIVE, RHO, ROUNDS, NVECTOR };
+         MAX_OVERLAP_RELATIVE, RHO, ROUNDS, CLEARING_WORK, NVECTOR };
   double diag_[NVECTOR] = {};
   bigint maxiter_hits_ = 0;
   bigint maxiter_hits_run_ = 0;
-  double recovery_speed_ = 0.0;    // overlap policy, see add_row()
+  double recovery_speed_ = 0.0;      // overlap policy, see apply_overlap_policy()
+  double speed_scale_ = 0.0;         // V of the candidate rows (core/residual.h)
+  double last_speed_scale_ = 0.0;    // V the last solve used
   std::vector<hardcontact::Vec3> force_;    // contact force per owned atom
   int nmax_ = 0;
   int nlocal_rows_max_ = 0;
@@ -87,6 +89,8 @@ class FixHardContact : public Fix {
   bool add_missed_rows();
   void add_row(int i, int j, const hardcontact::Vec3 &n, double d, double size);
   template <class F> void visit_pairs(F &&f);
+  hardcontact::Vec3 coincident_normal(int i, int j) const;
+  void apply_overlap_policy(int first_row);
   template <class F> void visit_walls(F &&f);
   void solve();
   void move_and_check();

@@ -108,6 +108,28 @@ void FixHardContact::build_candidates(double scale)
     if (d <= scale * h * uf[i].norm())
       add_row(i, -1 - w, walls_[w].normal(), d, atom->radius[i]);
   });
+  speed_scale_ = hardcontact::free_speed_scale(problem_, ops_);
+  apply_overlap_policy(0);
+}
+
+// Overlap policy: a pair overlapping at q^n (D < 0) is asked to separate by no more than h
+// times the largest velocity the external forces give in one step (g h under gravity), plus
+// twice the solver tolerance on its row scale (residual.h). The first part does not feed on
+// itself: clearing overlaps adds at most about m (g h)^2 per atom and step, and with no force
+// large overlaps stay as they are. The second clears what a solve stopped at tol leaves (at
+// most tol times the scale per step), so such overlaps never add up. For D >= 0, the normal
+// case, this is eq. 15 unchanged.
+void FixHardContact::apply_overlap_policy(int first_row)
+{
+  const int nc = problem_.n_contacts();
+  const double h = problem_.h;
+  const double tol = settings_.tol;
+  for (int c = first_row; c < nc; ++c) {
+    if (problem_.gap[c] >= 0.0) continue;
+    // the row scale without its round-off floor: at rest with no force nothing may move
+    const double s = MIN(problem_.size[c], h * speed_scale_);
+    problem_.gap[c] = MAX(problem_.gap[c], -(h * recovery_speed_ + 2.0 * tol * s));
+  }
 }
 
 // After a solve: a pair outside the candidates may still be violated when a speed grew above
@@ -118,35 +140,33 @@ bool FixHardContact::add_missed_rows()
   const double h = problem_.h;
   const std::vector<Vec3> &uf = problem_.u_free;
   const double tol = settings_.tol;
+  // the scale the solve just used (V over its rows), so that every row meets one criterion
+  const double v = last_speed_scale_;
+  const int first = problem_.n_contacts();
   int added = 0;
   visit_pairs([&](int i, int j, const Vec3 &n, double d, double size) {
     if (d <= h * (uf[i].norm() + uf[j].norm())) return;    // a candidate already
     const double g = d + h * n.dot(u_[j] - u_[i]);
-    if (hardcontact::row_violation(g, 0.0, size) <= tol) return;
+    if (hardcontact::row_violation(g, 0.0, hardcontact::row_scale(size, h, v, tol)) <= tol) return;
     add_row(i, j, n, d, size);
     ++added;
   });
   visit_walls([&](int i, int w, double d) {
     if (d <= h * uf[i].norm()) return;
     const double g = d - h * walls_[w].normal().dot(u_[i]);
-    if (hardcontact::row_violation(g, 0.0, atom->radius[i]) <= tol) return;
-    add_row(i, -1 - w, walls_[w].normal(), d, atom->radius[i]);
+    const double size = atom->radius[i];
+    if (hardcontact::row_violation(g, 0.0, hardcontact::row_scale(size, h, v, tol)) <= tol) return;
+    add_row(i, -1 - w, walls_[w].normal(), d, size);
     ++added;
   });
+  apply_overlap_policy(first);
   return ops_.sum_all(added) > 0.0;
 }
 
 void FixHardContact::add_row(int i, int j, const Vec3 &n, double d, double size)
 {
-  // Overlap policy: a pair overlapping at q^n (D < 0) is asked to separate by no more than h
-  // times the largest velocity the external forces give in one step (g h under gravity), plus
-  // twice the solver tolerance. The first part does not feed on itself: clearing overlaps adds
-  // at most about m (g h)^2 per atom and step, and with no force large overlaps stay as they
-  // are. The second clears what a solve stopped at tol leaves, so such overlaps never add up.
-  // For D >= 0, the normal case, this is eq. 15 unchanged.
   const bool counted = j < 0 || j < atom->nlocal || atom->tag[i] < atom->tag[j];
-  const double floor = -(problem_.h * recovery_speed_ + 2.0 * settings_.tol * size);
-  problem_.add_contact(i, j, n, MAX(d, floor), size, counted);
+  problem_.add_contact(i, j, n, d, size, counted);    // D < 0: see apply_overlap_policy()
 }
 
 template <class F> void FixHardContact::visit_pairs(F &&f)
@@ -167,12 +187,23 @@ template <class F> void FixHardContact::visit_pairs(F &&f)
       if (tag[i] == tag[j]) continue;    // a sphere and its own periodic image
       const Vec3 dx = Vec3(x[j]) - Vec3(x[i]);
       const double r = dx.norm();
-      // Coincident centres: any unit vector is a valid G (subgradient); both processes
-      // holding the pair must pick the same one, so orient it by atom ID.
-      const Vec3 n = r > 0.0 ? Vec3(dx / r) : Vec3(Vec3::UnitX() * (tag[i] < tag[j] ? 1.0 : -1.0));
+      const Vec3 n = r > 0.0 ? Vec3(dx / r) : coincident_normal(i, j);
       f(i, j, n, r - radius[i] - radius[j], radius[i] + radius[j]);
     }
   }
+}
+
+// Coincident centres: D is not differentiable and any unit vector is a valid G (subgradient).
+// Every free motion moves such a pair apart, so take the direction of the free relative
+// velocity: the constraint then lets the pair go on as it moves, instead of stopping it on an
+// arbitrary axis. At rest, orient by atom ID. Both processes holding the pair see the same
+// u_free (forwarded to ghosts) and atom IDs, so they pick opposite vectors of one normal.
+Vec3 FixHardContact::coincident_normal(int i, int j) const
+{
+  const Vec3 du = problem_.u_free[j] - problem_.u_free[i];
+  const double speed = du.norm();
+  if (speed > 0.0) return du / speed;
+  return Vec3::UnitX() * (atom->tag[i] < atom->tag[j] ? 1.0 : -1.0);
 }
 
 template <class F> void FixHardContact::visit_walls(F &&f)
@@ -201,6 +232,7 @@ void FixHardContact::solve()
   for (;;) {
     report = solver_->solve(problem_, settings_, ops_, mu_, u_);    // from the mu found so far
     iterations += report.iterations;
+    last_speed_scale_ = report.speed_scale;
     ++rounds;
     // An unconverged solve is not refined further: its violations are reported, not chased.
     if (!report.converged || !add_missed_rows()) break;
@@ -222,6 +254,12 @@ void FixHardContact::solve()
                      id, MAXITER_HITS + 1);
   }
   remember_multipliers();
+  // The kinetic energy the solve may add (residual.h, energy_within_bound): the work of the
+  // forces clearing overlaps present at q^n, sum mu max(0, -D) over the rows.
+  double work = 0.0;
+  for (int c = 0; c < problem_.n_contacts(); ++c)
+    if (problem_.counted[c] && mu_[c] > 0.0) work += mu_[c] * MAX(0.0, -problem_.gap[c]);
+  diag_[CLEARING_WORK] = ops_.sum_all(work);
   diag_[ITERATIONS] = iterations;
   diag_[RESIDUAL] = report.residual;
   diag_[RHO] = report.rho;

@@ -20,11 +20,16 @@ Asserted after settling (d = 2 r, L = rows or layers):
      (active set, machine precision; serial only) end at the same positions within L tol d;
   no creep: no centre moves more than L tol d between the end of settling and the end of the
      run (10^3 or 10^4 steps);
-  bounded multipliers (Prop. 5): every contact force of the local array, at every 100th step,
-     is <= the weight of the bodies in the column above the contact (centres higher than the
-     contact point and within 2 d of it horizontally), i.e. no self-stress builds up in the
-     wall-to-wall rows (where the set of valid mu is not bounded: two opposite walls are
-     outside Lemma 1) and no multiplier drifts under warm start;
+  the determinate part of the forces: at every 100th step the floor carries the weight of the
+     crystal and the side walls' loads cancel, to L tol m_total g (each of the L rows in series
+     may leave a velocity error tol g h, core/residual.h);
+  bounded multipliers: no multiplier drifts (the largest force over the last tenth of the run
+     <= 1.25 x its value after settling). The split of the load between the wall-to-wall rows
+     and the rest is not asserted: two opposite walls are outside Lemma 1, a wall-to-wall row
+     can carry any self-stress without changing u, and every solver, the exact one included,
+     keeps some (measured and reported as force_over_column: the largest contact force over
+     the weight of the column above it, centres higher than the contact point and within 2 d
+     horizontally);
   feasibility: f_hc[7] <= tol at every step; no solve stopped at maxiter; no lost atom.
 On 2 ranks (np 2 registration): the same checks, and the final positions compared with a serial
 apgd_cold run of the same data file (within L tol d)."""
@@ -135,7 +140,10 @@ def test():
         chk(creep <= bound_pos, "%s: no creep over %d steps: max |x(t) - x(%d)| %.3g <= %.3g"
                  % (label, nsteps, NSETTLE, creep, bound_pos))
         mass = frames[0].columns["mass"]
-        worst_ratio, worst_row, worst_step, fmax = 0.0, None, None, []
+        weight = float(mass.sum()) * G
+        up = dim - 1    # gravity acts along -y (2d) or -z (3d)
+        bound_eq = layers * TOL * weight
+        worst_ratio, worst_row, worst_step, fmax, worst_eq = 0.0, None, None, [], (0.0, None, "")
         for f in frames:
             lf = local.get(f.timestep)
             chk(lf is not None, "%s: dump local frame at step %d" % (label, f.timestep))
@@ -150,17 +158,26 @@ def test():
             k = int(np.argmax(ratio))
             if ratio[k] > worst_ratio:
                 worst_ratio, worst_row, worst_step = float(ratio[k]), rows[k], f.timestep
-        chk(worst_ratio <= 1.0,
-            "%s: bounded multipliers: every contact force of every 100th step <= the weight of "
-            "the column above it: largest ratio %.3g (step %s, row [i, j, force, normal, wall] "
-            "%s)" % (label, worst_ratio, worst_step, worst_row))
+            # the wall loads: force times the normal (body -> wall) is the push on the wall
+            load = np.zeros(3)
+            for r_ in rows:
+                if r_[6] > 0:
+                    load += r_[2] * np.array(r_[3:6])
+            err = [abs(load[up] + weight)] + [abs(load[a]) for a in range(dim) if a != up]
+            if max(err) > worst_eq[0]:
+                worst_eq = (max(err), f.timestep, "floor %.9g vs weight %.9g, side balance %s"
+                            % (-load[up], weight, ["%.3g" % load[a] for a in range(dim) if a != up]))
+        chk(worst_eq[0] <= bound_eq,
+            "%s: the walls carry the weight: floor load = weight and the side walls balance, to "
+            "L tol m_total g: largest error %.3g <= %.3g (step %s: %s)"
+            % (label, worst_eq[0], bound_eq, worst_eq[1], worst_eq[2]))
         tail = fmax[-max(1, len(fmax) // 10):]
         chk(max(tail) <= 1.25 * fmax[0],
             "%s: no multiplier drift: largest contact force over the last tenth of the run "
             "%.4g <= 1.25 x its value after settling %.4g" % (label, max(tail), fmax[0]))
         finals[name] = x_end
         sc.report("crystal_%dd_np%d_%s" % (dim, args.np, name), bodies=natoms, steps=nsteps,
-                  overlap=ov, vmax=vmax, dev_ideal=dev, creep=creep, force_over_column=worst_ratio, fmax_settled=fmax[0], fmax_end=fmax[-1],
+                  overlap=ov, vmax=vmax, dev_ideal=dev, creep=creep, force_over_column=worst_ratio, wall_load_err=worst_eq[0], fmax_settled=fmax[0], fmax_end=fmax[-1],
                   active_contacts=int(th["f_hc[4]"][-1]), dof=dim * natoms,
                   max_iter_settled=int(th["f_hc[1]"][NSETTLE:].max()),
                   mean_iter_settled=float(th["f_hc[1]"][NSETTLE:].mean()),

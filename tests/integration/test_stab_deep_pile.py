@@ -25,7 +25,12 @@ larger of its max over the first tenth after settling and tol d;
 the pile height (top of the highest body) after settling and at the end differ by at most
 L tol d (L layers, each contact may be off by tol d); no lost atom. Column only: every centre
 within L tol d of r (2k + 1), horizontal position unchanged (1e-12), and the contact forces
-(local array) equal (60 - k) m g to 1e-3 relative (the multipliers of a column are unique)."""
+(local array) equal (60 - k) m g to L^2 tol m g / 2 (the multipliers of a column are unique).
+Why: at rest the fastest free approach is the floor's, V = g h, so each row's gap error is at
+most tol h V = tol g h^2 (core/residual.h). Gap errors e give force errors A^-1 e with
+A = h^2 G M^-1 G^T; for a chain standing on a floor A^-1 = (m / h^2) min(k, l), whose row sums
+are at most L^2 / 2: force errors up to L^2 tol m g / 2 (0.18 m g here, 3e-3 of the bottom
+contact's load)."""
 
 import sys
 from pathlib import Path
@@ -38,6 +43,9 @@ import stability_common as sc
 G = 1.0
 TOL = 1e-4
 NSETTLE = {"pile2d": 400, "column": 300}
+# Uzawa's iterations grow like the condition number, L^2 (the paper's Remark 8 step is the
+# best fixed step for a chain): the column needs up to ~2 x 10^4 per solve while it settles.
+MAXITER = {"uzawa": " maxiter 100000"}
 
 
 def scene(case):
@@ -86,7 +94,7 @@ def test():
     d = 2.0 * float(radius.max())
     bound_h = layers * TOL * d
     chk = sc.Checks()
-    text = sc.deck("data.pile", total, h, 0.2, "tol %g solver %s %s" % (TOL, solver, walls), dim=dim,
+    text = sc.deck("data.pile", total, h, 0.2, "tol %g solver %s %s%s" % (TOL, solver, walls, MAXITER.get(solver, "")), dim=dim,
                    boundary=boundary, gravity=G, dump_every=max(total // 10, 1),
                    local_every=total if case == "column" else 0, rebuild_every_step=True)
     label = "%s (%d bodies, %s)" % (case, n, solver)
@@ -143,15 +151,18 @@ def test():
             below = max(int(a), int(b)) - 1 if b > 0 else 0
             expect.append((n - below) * m * G)
         err = float(np.abs(forces / np.array(expect) - 1.0).max())
-        chk(len(forces) == n and err <= 1e-3,
-            "%s: %d contact forces (expected %d) = weight above, largest relative error %.3g <= 1e-3"
-            % (label, len(forces), n, err))
+        err_abs = float(np.abs(forces - np.array(expect)).max()) / (m * G)
+        bound_f = 0.5 * layers ** 2 * TOL
+        chk(len(forces) == n and err_abs <= bound_f,
+            "%s: %d contact forces (expected %d) = weight above to L^2 tol m g / 2: largest error "
+            "%.3g m g <= %.3g m g (largest relative error %.3g)"
+            % (label, len(forces), n, err_abs, bound_f, err))
         extra = dict(dev_ideal=dev, force_err=err)
     # The same deck with the documented neighbour settings (check yes, skin >= 4 x timestep x
     # largest speed: the largest speed of run 1, with a margin of 1.5) must run to the end.
     vmax = float(th["c_vmax"].max())
     skin = 1.5 * 4.0 * h * vmax
-    text2 = sc.deck("data.pile", total, h, skin, "tol %g solver %s %s" % (TOL, solver, walls),
+    text2 = sc.deck("data.pile", total, h, skin, "tol %g solver %s %s%s" % (TOL, solver, walls, MAXITER.get(solver, "")),
                     dim=dim, boundary=boundary, gravity=G)
     label2 = "%s, neighbor %.4g bin (1.5 x 4 h v_max, v_max %.4g), check yes" % (label, skin, vmax)
     try:

@@ -7,8 +7,11 @@ tol 1e-4. The inelastic gas cools by collisions, clusters, and clusters stick to
 
 Asserted at every step (thermo, %.16g): no lost atom; every value finite; no overlap beyond
 tol (f_hc[7]); no solve at maxiter; the kinetic energy monotone non-increasing (Prop. 3: walls
-are fixed obstacles, 0 stays admissible), step to step, to round-off: KE(n+1) - KE(n) <=
-1e-12 KE(0). From dumps every 1/20 of the run: all-pairs and wall overlap <= tol, all atoms
+are fixed obstacles, 0 stays admissible), step to step, to round-off, beyond the work of
+clearing overlaps present at the start of a step (f_hc[10]: the overlaps a solve stopped at tol
+leaves are pushed apart at the next step, and Prop. 3 holds for D >= 0 only):
+KE(n+1) - KE(n) - f_hc[10](n+1) <= 1e-12 KE(0). The raw rises and the total clearing work are
+reported (ke_rise_raw, clearing_work_total, in units of KE(0)). From dumps every 1/20 of the run: all-pairs and wall overlap <= tol, all atoms
 inside the walls, everything finite."""
 
 import sys
@@ -60,13 +63,16 @@ def test():
     label = "closed box, %d spheres, %d steps" % (N, nsteps)
     ov = sc.check_common(th, N, TOL, label, check=chk)
     ke = th["c_ke"]
-    d = np.diff(ke)
-    rise = sc.energy_rises(ke)
+    work = th["f_hc[10]"]
+    d = np.diff(ke) - work[1:]    # rise beyond the work of clearing overlaps (f_hc[10])
+    rise = float(max(d.max(), 0.0) / ke[0])
+    raw = sc.energy_rises(ke)
     nrise = int((d > KE_ROUNDOFF * ke[0]).sum())
     k = int(np.argmax(d)) + 1
-    chk(rise <= KE_ROUNDOFF, "%s: kinetic energy monotone non-increasing: largest step-to-step "
-        "rise %.3g KE(0) at step %d (KE %.6g -> %.6g), %d steps with a rise above %g KE(0)"
-        % (label, rise, int(th["Step"][k]), ke[k - 1], ke[k], nrise, KE_ROUNDOFF))
+    chk(rise <= KE_ROUNDOFF, "%s: kinetic energy monotone non-increasing beyond the work of "
+        "clearing overlaps: largest step-to-step excess %.3g KE(0) at step %d (KE %.6g -> %.6g, "
+        "work %.3g), %d steps with an excess above %g KE(0)"
+        % (label, rise, int(th["Step"][k]), ke[k - 1], ke[k], work[k], nrise, KE_ROUNDOFF))
     frames = lr.read_dump(res.path("dump.atoms"))
     worst_pair = worst_wall = 0.0
     for fr in frames:
@@ -77,7 +83,8 @@ def test():
         worst_wall = max(worst_wall, sc.wall_overlap(xs, fr.columns["radius"], wl))
     chk(worst_pair <= TOL * (1 + 1e-9) and worst_wall <= TOL * (1 + 1e-9),
         "%s: dumps: all-pairs overlap %.3g, wall overlap %.3g <= tol" % (label, worst_pair, worst_wall))
-    sc.report("long_run_np%d_%d" % (args.np, nsteps), steps=nsteps, overlap=ov, ke_rise=rise,
+    sc.report("long_run_np%d_%d" % (args.np, nsteps), steps=nsteps, overlap=ov, ke_excess=rise,
+              ke_rise_raw=raw, clearing_work_total=float(work.sum() / ke[0]),
               steps_with_rise=nrise, ke_end_over_ke0=float(ke[-1] / ke[0]),
               overlap_dumps=worst_pair, wall_overlap=worst_wall, max_iter=int(th["f_hc[1]"].max()),
               seconds=round(res.seconds, 1))
