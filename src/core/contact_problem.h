@@ -26,6 +26,9 @@ struct ContactProblem {
   // Optional, for solvers that assemble the operator (exact): owner[b] = the owned body that
   // ghost b copies (a periodic image on this process), -1 if owned elsewhere. Empty = unknown.
   std::vector<int> owner;
+  // Absolute round-off of a predicted gap (distance units), from the host's coordinates and
+  // speeds; 0 if unknown. No solver is asked for a gap error below it (residual.h).
+  double gap_roundoff = 0.0;
 
   std::vector<int> body_i, body_j;
   std::vector<Vec3> normal;

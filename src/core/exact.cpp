@@ -136,7 +136,7 @@ SolveReport Exact::solve(const ContactProblem &p, const SolverSettings &s, Distr
   velocities_from_multipliers(p, mu, u, ops);
   report.speed_scale = free_speed_scale(p, ops);
   std::vector<double> row_scales(nc);
-  for (int c = 0; c < nc; ++c) row_scales[c] = row_scale(p.size[c], p.h, report.speed_scale, s.tol);
+  for (int c = 0; c < nc; ++c) row_scales[c] = row_scale(p.size[c], p.h, report.speed_scale, s.tol, p.gap_roundoff);
   report.residual = residual(p, mu, u, row_scales, ops);
   report.converged = report.converged && report.residual <= s.tol;
   return report;

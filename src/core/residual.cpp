@@ -42,7 +42,7 @@ bool energy_within_bound(const ContactProblem &p, const std::vector<double> &mu,
   const int nc = p.n_contacts();
   for (int c = 0; c < nc; ++c) {
     if (!p.counted[c] || mu[c] <= 0.0) continue;
-    sums[2] += mu[c] * std::max(0.0, -p.gap[c]);
+    sums[2] += mu[c] * (std::max(0.0, -p.gap[c]) + p.gap_roundoff);
     // round-off: the kinetic energy of moving the pair kGapRoundoff size apart in one step
     const int i = p.body_i[c], j = p.body_j[c];
     const double w = p.inv_mass[i] + (j >= 0 ? p.inv_mass[j] : 0.0);

@@ -34,12 +34,14 @@ inline double row_violation(double g, double mu, double scale)
 // V: the largest |n_c . (u_free_j - u_free_i)| over all rows of all processes (u_wall = 0).
 double free_speed_scale(const ContactProblem &p, DistributedOps &ops);
 
-// s_c = min(size_c, h V), and never below kGapRoundoff size_c / tol.
-inline double row_scale(double size, double h, double speed_scale, double tol)
+// s_c = min(size_c, h V), but tol s_c never below the round-off of the gap: kGapRoundoff
+// size_c, or the host's absolute gap_roundoff (coordinates far larger than the sizes).
+inline double row_scale(double size, double h, double speed_scale, double tol,
+                        double gap_roundoff = 0.0)
 {
   const double s = h * speed_scale < size ? h * speed_scale : size;
-  const double floor = kGapRoundoff * size / tol;
-  return s > floor ? s : (floor < size ? floor : size);
+  const double roundoff = kGapRoundoff * size > gap_roundoff ? kGapRoundoff * size : gap_roundoff;
+  return s * tol > roundoff ? s : roundoff / tol;
 }
 
 // Largest row_violation over all rows of all processes.

@@ -8,7 +8,7 @@ void WorkingSet::init(const ContactProblem &p, const std::vector<double> &mu, do
   const int nc = p.n_contacts();
   speed_scale_ = free_speed_scale(p, ops);
   scale_.resize(nc);
-  for (int c = 0; c < nc; ++c) scale_[c] = row_scale(p.size[c], p.h, speed_scale_, tol);
+  for (int c = 0; c < nc; ++c) scale_[c] = row_scale(p.size[c], p.h, speed_scale_, tol, p.gap_roundoff);
   rows_.clear();
   member_.assign(nc, 0);
   next_check_ = 1;

@@ -75,6 +75,7 @@ class FixHardContact : public Fix {
   double recovery_speed_ = 0.0;      // overlap policy, see apply_overlap_policy()
   double speed_scale_ = 0.0;         // V of the candidate rows (core/residual.h)
   double last_speed_scale_ = 0.0;    // V the last solve used
+  std::vector<hardcontact::Vec3> xowner_;    // owners' coordinates, unshifted on ghosts
   std::vector<hardcontact::Vec3> force_;    // contact force per owned atom
   int nmax_ = 0;
   int nlocal_rows_max_ = 0;
@@ -90,6 +91,7 @@ class FixHardContact : public Fix {
   void add_row(int i, int j, const hardcontact::Vec3 &n, double d, double size);
   template <class F> void visit_pairs(F &&f);
   hardcontact::Vec3 coincident_normal(int i, int j) const;
+  hardcontact::Vec3 pair_vector(int i, int j, double **x) const;
   void apply_overlap_policy(int first_row);
   template <class F> void visit_walls(F &&f);
   void solve();

@@ -6,6 +6,7 @@
 
 #include "atom.h"
 #include "comm.h"
+#include "domain.h"
 #include "error.h"
 #include "force.h"
 #include "memory.h"
@@ -14,6 +15,9 @@
 #include "update.h"
 
 #include "../core/residual.h"
+
+#include <cfloat>
+#include <cmath>
 #include "../core/velocity_update.h"
 
 #include <cmath>
@@ -77,6 +81,23 @@ void FixHardContact::build_bodies()
   // Radii may change during a run (fix adapt): the list and ghosts only reach 2 r_max + skin.
   if (global[1] > rmax_) radius_grew(global[1]);
   ops_.forward(problem_.u_free.data()->data(), 3);
+
+  // The owners' coordinates on the ghosts, unshifted: a pair across a periodic boundary is
+  // then measured as (x_j - x_i) + k L on both processes holding it (see visit_pairs).
+  xowner_.resize(nall);
+  for (int i = 0; i < nlocal; ++i) xowner_[i] = Vec3(atom->x[i]);
+  ops_.forward(xowner_.data()->data(), 3);
+
+  // Round-off of a predicted gap: coordinates of size X carry errors of eps X, and h u of
+  // eps h |u|. The solvers never ask for less (core/residual.h).
+  double extent = 0.0;
+  for (int d = 0; d < 3; ++d)
+    extent = MAX(extent, MAX(fabs(domain->boxlo[d]), fabs(domain->boxhi[d])));
+  double speed = 0.0;
+  for (int i = 0; i < nlocal; ++i) speed = MAX(speed, problem_.u_free[i].norm());
+  double speed_all;
+  MPI_Allreduce(&speed, &speed_all, 1, MPI_DOUBLE, MPI_MAX, world);
+  problem_.gap_roundoff = 16.0 * DBL_EPSILON * (extent + problem_.h * speed_all);
 
   // The exact solver assembles the operator: on one process, ghosts are periodic images.
   problem_.owner.clear();
@@ -147,7 +168,7 @@ bool FixHardContact::add_missed_rows()
   visit_pairs([&](int i, int j, const Vec3 &n, double d, double size) {
     if (d <= h * (uf[i].norm() + uf[j].norm())) return;    // a candidate already
     const double g = d + h * n.dot(u_[j] - u_[i]);
-    if (hardcontact::row_violation(g, 0.0, hardcontact::row_scale(size, h, v, tol)) <= tol) return;
+    if (hardcontact::row_violation(g, 0.0, hardcontact::row_scale(size, h, v, tol, problem_.gap_roundoff)) <= tol) return;
     add_row(i, j, n, d, size);
     ++added;
   });
@@ -155,7 +176,7 @@ bool FixHardContact::add_missed_rows()
     if (d <= h * uf[i].norm()) return;
     const double g = d - h * walls_[w].normal().dot(u_[i]);
     const double size = atom->radius[i];
-    if (hardcontact::row_violation(g, 0.0, hardcontact::row_scale(size, h, v, tol)) <= tol) return;
+    if (hardcontact::row_violation(g, 0.0, hardcontact::row_scale(size, h, v, tol, problem_.gap_roundoff)) <= tol) return;
     add_row(i, -1 - w, walls_[w].normal(), d, size);
     ++added;
   });
@@ -185,12 +206,33 @@ template <class F> void FixHardContact::visit_pairs(F &&f)
       const int j = jlist[jj] & NEIGHMASK;
       if (!(mask[i] & groupbit) && !(mask[j] & groupbit)) continue;
       if (tag[i] == tag[j]) continue;    // a sphere and its own periodic image
-      const Vec3 dx = Vec3(x[j]) - Vec3(x[i]);
+      const Vec3 dx = pair_vector(i, j, x);
       const double r = dx.norm();
       const Vec3 n = r > 0.0 ? Vec3(dx / r) : coincident_normal(i, j);
       f(i, j, n, r - radius[i] - radius[j], radius[i] + radius[j]);
     }
   }
+}
+
+// x_j - x_i for a listed pair. A pair across processes (newton off) is a row on both, and
+// Prop. 4 (exact momentum) needs the two rows to evolve identically: same D, opposite normals,
+// bit for bit. A ghost copied without a periodic shift has exactly its owner's coordinates, so
+// the plain difference is antisymmetric. Across a periodic boundary the ghost holds
+// x_owner + k L rounded, and the two processes would round differently: there the difference
+// of the owners' coordinates (xowner_) is taken, then k L added, which rounds antisymmetrically.
+Vec3 FixHardContact::pair_vector(int i, int j, double **x) const
+{
+  const Vec3 plain = Vec3(x[j]) - Vec3(x[i]);
+  if (j < atom->nlocal) return plain;
+  const Vec3 shift = Vec3(x[j]) - xowner_[j];
+  if (shift.isZero(0.0)) return plain;
+  Vec3 dx = xowner_[j] - Vec3(x[i]);
+  for (int d = 0; d < 3; ++d) {
+    if (shift[d] == 0.0) continue;
+    const double k = std::nearbyint(shift[d] / domain->prd[d]);
+    dx[d] += k * domain->prd[d];
+  }
+  return dx;
 }
 
 // Coincident centres: D is not differentiable and any unit vector is a valid G (subgradient).

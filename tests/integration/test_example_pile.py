@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
-"""examples/pile, shortened to 0.15 s of physical time (150 steps of h = 1e-3 s with
-fix hardcontact; about 15 000 steps of 1e-5 s for the soft-sphere twin): 750 glass discs
+"""examples/pile, shortened to 0.2 s of physical time (200 steps of h = 1e-3 s with
+fix hardcontact; about 20 000 steps of 1e-5 s for the soft-sphere twin): 750 glass discs
 (d = 1.6-2.4 mm, data file from make_data.py) fall into a box 80 mm wide and settle.
 
 Hard contacts (in.pile), checked:
@@ -33,7 +33,7 @@ EX = os.path.join(ROOT, "examples", "pile")
 sys.path.insert(0, os.path.join(ROOT, "examples", "common"))
 import granular as g  # noqa: E402
 
-TEND = 0.15
+TEND = 0.2
 WALLS = [(0, 0.0, 1), (0, 0.08, -1), (1, 0.0, 1)]
 
 
@@ -47,7 +47,7 @@ def test():
                        variables=common, timeout=args.timeout)
     th = hard.thermo[-1]
     print("hard: %d steps in %.1f s" % (th["Step"][-1], hard.seconds))
-    lr.check(int(th["Step"][-1]) == 150 and bool(np.all(th["Atoms"] == 750)), "hard: 150 steps, 750 atoms")
+    lr.check(int(th["Step"][-1]) == 200 and bool(np.all(th["Atoms"] == 750)), "hard: 200 steps, 750 atoms")
     lr.check(int(th["f_hc[6]"][-1]) == 0, "hard: no solve stopped at maxiter")
     lr.check(float(th["f_hc[7]"].max()) <= 1e-4, "hard: f_hc[7] <= tol at every thermo step (max %.3g)"
              % float(th["f_hc[7]"].max()))
