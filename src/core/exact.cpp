@@ -134,10 +134,9 @@ SolveReport Exact::solve(const ContactProblem &p, const SolverSettings &s, Distr
   }
   for (int c = 0; c < nc; ++c) mu[c] = m[c];
   velocities_from_multipliers(p, mu, u, ops);
-  report.speed_scale = free_speed_scale(p, ops);
-  std::vector<double> row_scales(nc);
-  for (int c = 0; c < nc; ++c) row_scales[c] = row_scale(p.size[c], p.h, report.speed_scale, s.tol, p.gap_roundoff);
-  report.residual = residual(p, mu, u, row_scales, ops);
+  std::vector<double> row_scale_of;
+  report.speed_scale = row_scales(p, s.tol, ops, row_scale_of);
+  report.residual = residual(p, mu, u, row_scale_of, ops);
   report.converged = report.converged && report.residual <= s.tol;
   return report;
 }

@@ -17,6 +17,25 @@ double free_speed_scale(const ContactProblem &p, DistributedOps &ops)
   return ops.max_all(v);
 }
 
+double row_scales(const ContactProblem &p, double tol, DistributedOps &ops,
+                  std::vector<double> &scale)
+{
+  const double v = free_speed_scale(p, ops);
+  const int nc = p.n_contacts();
+  scale.resize(nc);
+  for (int c = 0; c < nc; ++c) scale[c] = row_scale(p.size[c], p.h, v, tol, p.gap_roundoff);
+  return v;
+}
+
+double clearing_work(const ContactProblem &p, const std::vector<double> &mu)
+{
+  double work = 0.0;
+  const int nc = p.n_contacts();
+  for (int c = 0; c < nc; ++c)
+    if (p.counted[c] && mu[c] > 0.0) work += mu[c] * std::max(0.0, -p.gap[c]);
+  return work;
+}
+
 double residual(const ContactProblem &p, const std::vector<double> &mu,
                 const std::vector<Vec3> &u, const std::vector<double> &scale,
                 DistributedOps &ops)
@@ -32,7 +51,7 @@ bool energy_within_bound(const ContactProblem &p, const std::vector<double> &mu,
 {
   // sums: gain of kinetic energy, kinetic energy of u_free, allowed work (each body and each
   // row counted once over all processes)
-  double sums[3] = {0.0, 0.0, 0.0};
+  double sums[3] = {0.0, 0.0, clearing_work(p, mu)};
   for (int b = 0; b < p.n_owned; ++b) {
     if (p.inv_mass[b] <= 0.0) continue;    // an obstacle: u = u_free
     const double m = 1.0 / p.inv_mass[b];
@@ -42,7 +61,7 @@ bool energy_within_bound(const ContactProblem &p, const std::vector<double> &mu,
   const int nc = p.n_contacts();
   for (int c = 0; c < nc; ++c) {
     if (!p.counted[c] || mu[c] <= 0.0) continue;
-    sums[2] += mu[c] * (std::max(0.0, -p.gap[c]) + p.gap_roundoff);
+    sums[2] += mu[c] * p.gap_roundoff;
     // round-off: the kinetic energy of moving the pair kGapRoundoff size apart in one step
     const int i = p.body_i[c], j = p.body_j[c];
     const double w = p.inv_mass[i] + (j >= 0 ? p.inv_mass[j] : 0.0);

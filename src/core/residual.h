@@ -44,6 +44,14 @@ inline double row_scale(double size, double h, double speed_scale, double tol,
   return s * tol > roundoff ? s : roundoff / tol;
 }
 
+// Fills scale[c] = row_scale(...) for every row with V = free_speed_scale(p); returns V.
+double row_scales(const ContactProblem &p, double tol, DistributedOps &ops,
+                  std::vector<double> &scale);
+
+// This process's part of sum_c mu_c max(0, -D_c) over its counted rows: the work of clearing
+// overlaps present at q^n, the kinetic energy a step may gain (energy_within_bound).
+double clearing_work(const ContactProblem &p, const std::vector<double> &mu);
+
 // Largest row_violation over all rows of all processes.
 double residual(const ContactProblem &p, const std::vector<double> &mu,
                 const std::vector<Vec3> &u, const std::vector<double> &scale,

@@ -6,9 +6,7 @@ void WorkingSet::init(const ContactProblem &p, const std::vector<double> &mu, do
                       DistributedOps &ops)
 {
   const int nc = p.n_contacts();
-  speed_scale_ = free_speed_scale(p, ops);
-  scale_.resize(nc);
-  for (int c = 0; c < nc; ++c) scale_[c] = row_scale(p.size[c], p.h, speed_scale_, tol, p.gap_roundoff);
+  speed_scale_ = row_scales(p, tol, ops, scale_);
   rows_.clear();
   member_.assign(nc, 0);
   next_check_ = 1;

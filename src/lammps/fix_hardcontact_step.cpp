@@ -298,10 +298,7 @@ void FixHardContact::solve()
   remember_multipliers();
   // The kinetic energy the solve may add (residual.h, energy_within_bound): the work of the
   // forces clearing overlaps present at q^n, sum mu max(0, -D) over the rows.
-  double work = 0.0;
-  for (int c = 0; c < problem_.n_contacts(); ++c)
-    if (problem_.counted[c] && mu_[c] > 0.0) work += mu_[c] * MAX(0.0, -problem_.gap[c]);
-  diag_[CLEARING_WORK] = ops_.sum_all(work);
+  diag_[CLEARING_WORK] = ops_.sum_all(hardcontact::clearing_work(problem_, mu_));
   diag_[ITERATIONS] = iterations;
   diag_[RESIDUAL] = report.residual;
   diag_[RHO] = report.rho;

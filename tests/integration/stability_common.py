@@ -16,6 +16,7 @@ import math
 import numpy as np
 
 import lammps_run as lr
+import physics_common as pc
 
 DUMP_COLUMNS = "id radius mass x y z vx vy vz f_hc[1] f_hc[2] f_hc[3] f_hc[4]"
 LOCAL_COLUMNS = "f_hc[1] f_hc[2] f_hc[3] f_hc[4] f_hc[5] f_hc[6] f_hc[7]"
@@ -83,27 +84,8 @@ def deck(data, nsteps, h, skin, keywords="", dim=3, boundary="f f f", gravity=0.
 
 
 def write_data(path, box, radius, density, x, v=None, title="hardcontact stability test"):
-    """LAMMPS data file for atom_style sphere: atoms 1..N in the given order, type 1.
-    box = ((xlo, xhi), (ylo, yhi), (zlo, zhi)); radius, density per atom or scalar; x (N, 3);
-    v (N, 3) (default 0). Floats with repr: the file holds exactly these doubles."""
-    x = np.asarray(x, dtype=float).reshape(-1, 3)
-    n = len(x)
-    radius = np.broadcast_to(np.asarray(radius, dtype=float), (n,))
-    density = np.broadcast_to(np.asarray(density, dtype=float), (n,))
-    v = np.zeros((n, 3)) if v is None else np.asarray(v, dtype=float).reshape(n, 3)
-    r = repr
-    lines = [title, "", "%d atoms" % n, "1 atom types", ""]
-    for (lo, hi), name in zip(box, ("x", "y", "z")):
-        lines.append("%s %s %slo %shi" % (r(float(lo)), r(float(hi)), name, name))
-    lines += ["", "Atoms # sphere", ""]
-    for i in range(n):
-        lines.append("%d 1 %s %s %s %s %s" % (i + 1, r(2.0 * float(radius[i])), r(float(density[i])),
-                                              r(float(x[i, 0])), r(float(x[i, 1])), r(float(x[i, 2]))))
-    lines += ["", "Velocities", ""]
-    for i in range(n):
-        lines.append("%d %s %s %s 0 0 0" % (i + 1, r(float(v[i, 0])), r(float(v[i, 1])), r(float(v[i, 2]))))
-    with open(str(path), "w") as f:
-        f.write("\n".join(lines) + "\n")
+    """LAMMPS data file for atom_style sphere (physics_common.write_sphere_data)."""
+    pc.write_sphere_data(path, box, radius, density, x, v, title)
 
 
 def run(args, text, workdir, data_path, np_=None, timeout=None):
