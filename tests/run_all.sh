@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Set up (packages, LAMMPS headers), build, and run every test except the "soak" label.
+# Set up (packages, LAMMPS headers, a modern LAMMPS), build, and run every test except "soak".
 #   bash tests/run_all.sh             # all of it
 #   bash tests/run_all.sh -L unit     # extra arguments go to ctest
 # MPI tests carry the ctest PROCESSORS property (min(np, 2)): with -j2 an mpirun test never
@@ -10,6 +10,7 @@ ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 BUILD_DIR="${HARDCONTACT_BUILD_DIR:-$ROOT/build}"
 
 bash "$ROOT/.ci/setup.sh"
+bash "$ROOT/.ci/setup_modern_lammps.sh"     # the modern host: LAMMPS 4 Feb 2025 + PLUGIN
 bash "$ROOT/.ci/build.sh"
 
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1

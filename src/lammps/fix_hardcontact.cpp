@@ -13,6 +13,7 @@
 #include "utils.h"
 
 #include <cmath>
+#include <cstdlib>
 #include <cstring>
 #include <string>
 
@@ -95,10 +96,11 @@ void FixHardContact::parse_keywords(int narg, char **arg)
   auto number = [&](const char *keyword, const char *word) {
     if (!utils::is_double(word))
       error->all(FLERR, "Fix hardcontact {}: expected a number, got '{}'", keyword, word);
-    const double v = utils::numeric(FLERR, word, false, lmp);
-    if (!std::isfinite(v))
+    // Checked before utils::numeric: modern LAMMPS stops there on 1e999 with a message that
+    // does not name the keyword.
+    if (!std::isfinite(std::strtod(word, nullptr)))
       error->all(FLERR, "Fix hardcontact {}: value '{}' is not a finite number", keyword, word);
-    return v;
+    return utils::numeric(FLERR, word, false, lmp);
   };
 
   int iarg = 3;
@@ -215,7 +217,8 @@ void FixHardContact::init()
   if (user_cutghost_ < 0.0) user_cutghost_ = comm->cutghostuser;
   rmax_ = MAX(rmax_, 0.5 * (user_cutghost_ - neighbor->skin));
   cutoff_ = 2.0 * rmax_ + neighbor->skin;
-  comm->cutghostuser = MAX(user_cutghost_, cutoff_);
+  comm->cutghostuser =
+      MAX(user_cutghost_, hardcontact::compat::ghost_cutoff_for_request(cutoff_, neighbor->skin));
   if (force->pair == nullptr && (!neighbor->binsizeflag || binsize_set_here_)) {
     // Without a pair style LAMMPS bins with the whole box (master cutoff 0): O(N^2) lists,
     // and it stops sorting atoms (memory locality). Bin as a pair style of this reach would.

@@ -34,6 +34,20 @@ inline void request_size_list(LAMMPS_NS::Neighbor *neighbor, LAMMPS_NS::Fix *fix
 #endif
 }
 
+// The ghost cutoff a size request of reach `cutoff` needs. Modern LAMMPS stops a run whose
+// custom request cutoff plus the skin exceeds the communication cutoff (Neighbor::init), although
+// its stencil and bins use the custom cutoff as given; old LAMMPS checks nothing. Asking for the
+// extra skin of ghosts is the only way through that check: it costs one skin shell of ghosts.
+inline double ghost_cutoff_for_request(double cutoff, double skin)
+{
+#if HARDCONTACT_MODERN_API
+  return cutoff + skin;
+#else
+  (void) skin;
+  return cutoff;
+#endif
+}
+
 inline void forward_comm(LAMMPS_NS::Comm *comm, LAMMPS_NS::Fix *fix)
 {
 #if HARDCONTACT_MODERN_API

@@ -28,13 +28,36 @@ from pathlib import Path
 import numpy as np
 
 __all__ = [
-    "RunResult", "LammpsRunError", "run_deck", "parse_thermo", "read_dump", "read_dump_local",
+    "Host", "RunResult", "LammpsRunError", "run_deck", "parse_thermo", "read_dump", "read_dump_local",
     "DumpFrame", "test_args", "fresh_workdir", "check", "main",
 ]
 
 DEFAULT_TIMEOUT = 600.0
 _MARKER = ".lammps_run_workdir"
 _REPO = Path(__file__).resolve().parents[2]
+
+
+class Host(str):
+    """The LAMMPS a deck runs in: the path of its executable (a str, so it can be used as one)
+    plus how the fix gets into it.
+
+    name    "launcher": build/lmp_hardcontact (Debian's LAMMPS 29 Sep 2021, fix registered);
+            "modern":   a modern lmp with the PLUGIN package; every deck is run with
+                        `plugin load <plugin>` as its first line, as a user's deck would be.
+    plugin  path of hardcontactplugin.so for "modern", None for "launcher"
+    """
+
+    def __new__(cls, exe, name="launcher", plugin=None):
+        self = super().__new__(cls, str(exe))
+        self.name = name
+        self.plugin = str(Path(plugin).resolve()) if plugin else None
+        return self
+
+    def deck_text(self, text):
+        """The deck as this host runs it."""
+        if not self.plugin:
+            return text
+        return "plugin load %s\n%s" % (self.plugin, text)
 
 
 class LammpsRunError(RuntimeError):
@@ -126,8 +149,10 @@ def run_deck(lmp, deck, np=1, workdir=".", variables=None, expect_error=False,
              env=None):
     """Run one deck and return a RunResult.
 
-    lmp          the LAMMPS executable (build/lmp_hardcontact)
-    deck         the input text, or the path of an input file (run with -in <absolute path>)
+    lmp          the LAMMPS executable (build/lmp_hardcontact), or a Host (test_args().lmp):
+                 a Host with a plugin runs the deck with `plugin load <plugin>` prepended
+    deck         the input text, or the path of an input file (run with -in <absolute path>;
+                 on a plugin host, a copy with the plugin line runs in workdir)
     np           number of MPI ranks: 1 = plain exec, > 1 = mpirun --oversubscribe -np N
     workdir      directory the deck runs in (created); relative file names in the deck refer to it
     variables    {name: value} -> -var name value (a list/tuple value gives several words)
@@ -141,9 +166,15 @@ def run_deck(lmp, deck, np=1, workdir=".", variables=None, expect_error=False,
     (workdir / _MARKER).touch()
     for f in files:
         shutil.copy(str(f), str(workdir))
-    if _looks_like_deck_text(deck):
+    plugin_host = getattr(lmp, "plugin", None) is not None
+    if _looks_like_deck_text(deck) or plugin_host:
+        text = deck if _looks_like_deck_text(deck) else Path(deck).read_text()
+        if plugin_host:
+            text = lmp.deck_text(text)
+            if not _looks_like_deck_text(deck):
+                deck_name = Path(deck).name
         deck_path = workdir / deck_name
-        deck_path.write_text(deck if deck.endswith("\n") else deck + "\n")
+        deck_path.write_text(text if text.endswith("\n") else text + "\n")
     else:
         deck_path = Path(deck).resolve()
     log_path = workdir / log_name
@@ -365,15 +396,29 @@ def read_dump_local(path):
 
 def test_args(description=None, argv=None):
     """Command line of a deck test, as registered by hardcontact_deck_test() in
-    tests/CMakeLists.txt: --lmp <exe> --np <N> --workdir <dir> (plus --timeout)."""
+    tests/CMakeLists.txt: --lmp <exe> --np <N> --workdir <dir> (plus --timeout, and --host
+    modern --plugin <so> for a modern LAMMPS that loads the fix as a plugin). args.lmp is a
+    Host: pass it to run_deck as it is."""
     p = argparse.ArgumentParser(description=description)
-    p.add_argument("--lmp", default=str(_REPO / "build" / "lmp_hardcontact"),
-                   help="LAMMPS executable with fix hardcontact (default: build/lmp_hardcontact)")
+    p.add_argument("--lmp", default=None,
+                   help="LAMMPS executable: with fix hardcontact (launcher host, default "
+                        "build/lmp_hardcontact) or with the PLUGIN package (modern host)")
+    p.add_argument("--host", choices=("launcher", "modern"), default="launcher",
+                   help="launcher: the fix is built in; modern: every deck starts with "
+                        "'plugin load <--plugin>'")
+    p.add_argument("--plugin", default=None,
+                   help="hardcontactplugin.so built against the modern LAMMPS (--host modern)")
     p.add_argument("--np", type=int, default=1, help="MPI ranks (default 1: no mpirun)")
     p.add_argument("--workdir", default=None,
                    help="where the decks run (default: build/tests/work/<script name>)")
     p.add_argument("--timeout", type=float, default=DEFAULT_TIMEOUT, help="seconds per LAMMPS run")
     a = p.parse_args(argv)
+    if a.host == "modern":
+        if not a.lmp or not a.plugin:
+            p.error("--host modern needs --lmp <modern lmp> and --plugin <hardcontactplugin.so>")
+        a.lmp = Host(a.lmp, "modern", a.plugin)
+    else:
+        a.lmp = Host(a.lmp or _REPO / "build" / "lmp_hardcontact", "launcher")
     if a.workdir is None:
         a.workdir = str(_REPO / "build" / "tests" / "work" / Path(sys.argv[0]).stem)
     fresh_workdir(a.workdir)

@@ -8,63 +8,63 @@
 
 # step-size sweep, h from 0.002 to 5 diameters per step: no wall / a floor; default tol, a tight
 # one (1e-10) and the exact solver (the exact-projection properties at round-off)
-hardcontact_deck_test(NAME stab_step_sweep_free_np1 SCRIPT integration/test_stab_step_sweep.py NP 1
+hardcontact_deck_test(NAME stab_step_sweep_free_np1 HOSTS launcher SCRIPT integration/test_stab_step_sweep.py NP 1
   LABELS stability ARGS --case free --timeout 60 TIMEOUT 300)
-hardcontact_deck_test(NAME stab_step_sweep_free_np2 SCRIPT integration/test_stab_step_sweep.py NP 2
+hardcontact_deck_test(NAME stab_step_sweep_free_np2 HOSTS launcher SCRIPT integration/test_stab_step_sweep.py NP 2
   LABELS stability ARGS --case free --steps small,huge --timeout 60 TIMEOUT 300)
-hardcontact_deck_test(NAME stab_step_sweep_free_tight_np1 SCRIPT integration/test_stab_step_sweep.py NP 1
+hardcontact_deck_test(NAME stab_step_sweep_free_tight_np1 HOSTS launcher SCRIPT integration/test_stab_step_sweep.py NP 1
   LABELS stability ARGS --case free --tol 1e-10 --timeout 60 TIMEOUT 300)
-hardcontact_deck_test(NAME stab_step_sweep_free_exact_np1 SCRIPT integration/test_stab_step_sweep.py NP 1
+hardcontact_deck_test(NAME stab_step_sweep_free_exact_np1 HOSTS launcher SCRIPT integration/test_stab_step_sweep.py NP 1
   LABELS stability ARGS --case free --solver exact --steps tiny,small,medium --timeout 60 TIMEOUT 300)
-hardcontact_deck_test(NAME stab_step_sweep_wall_np1 SCRIPT integration/test_stab_step_sweep.py NP 1
+hardcontact_deck_test(NAME stab_step_sweep_wall_np1 HOSTS launcher SCRIPT integration/test_stab_step_sweep.py NP 1
   LABELS stability ARGS --case wall --timeout 60 TIMEOUT 300)
-hardcontact_deck_test(NAME stab_step_sweep_wall_np2 SCRIPT integration/test_stab_step_sweep.py NP 2
+hardcontact_deck_test(NAME stab_step_sweep_wall_np2 HOSTS launcher SCRIPT integration/test_stab_step_sweep.py NP 2
   LABELS stability ARGS --case wall --steps small,huge --timeout 60 TIMEOUT 300)
 
 # dense crystals (hexagonal 2d, FCC 3d) squeezed by gravity between walls: 10^3 steps at rest
 # in CI, 10^4 in the soak variants; apgd warm/cold, uzawa and exact must agree
 foreach(_dim 2 3)
   # the exact-solver run alone takes 25 s (2d) / 40 s (3d) on an idle core: room for a loaded one
-  hardcontact_deck_test(NAME stab_crystal_${_dim}d_np1 SCRIPT integration/test_stab_crystal.py NP 1
+  hardcontact_deck_test(NAME stab_crystal_${_dim}d_np1 HOSTS launcher SCRIPT integration/test_stab_crystal.py NP 1
     LABELS stability ARGS --dim ${_dim} --timeout 240 TIMEOUT 600)
-  hardcontact_deck_test(NAME stab_crystal_${_dim}d_soak_np1 SCRIPT integration/test_stab_crystal.py NP 1
+  hardcontact_deck_test(NAME stab_crystal_${_dim}d_soak_np1 HOSTS launcher SCRIPT integration/test_stab_crystal.py NP 1
     LABELS "stability;soak" ARGS --dim ${_dim} --steps 10000 --timeout 600 TIMEOUT 2400)
 endforeach()
-hardcontact_deck_test(NAME stab_crystal_2d_np2 SCRIPT integration/test_stab_crystal.py NP 2
+hardcontact_deck_test(NAME stab_crystal_2d_np2 HOSTS launcher SCRIPT integration/test_stab_crystal.py NP 2
   LABELS stability ARGS --dim 2 --variants apgd_warm,apgd_cold --timeout 60 TIMEOUT 150)
 
 # radius ratio 10, mass ratio 1000: heavy spheres through a bed of light ones
-hardcontact_deck_test(NAME stab_polydisperse_np1 SCRIPT integration/test_stab_polydisperse.py NP 1
+hardcontact_deck_test(NAME stab_polydisperse_np1 HOSTS launcher SCRIPT integration/test_stab_polydisperse.py NP 1
   LABELS stability ARGS --timeout 120 TIMEOUT 300)
-hardcontact_deck_test(NAME stab_polydisperse_np2 SCRIPT integration/test_stab_polydisperse.py NP 2
+hardcontact_deck_test(NAME stab_polydisperse_np2 HOSTS launcher SCRIPT integration/test_stab_polydisperse.py NP 2
   LABELS stability ARGS --timeout 120 TIMEOUT 300)
 
 # deep piles: a 40-row disordered 2d pile and a 60-sphere column; in CI the default solver on
 # both, and on the column the paper's uzawa and the exact reference; soak: 2 x 10^4 steps each
-hardcontact_deck_test(NAME stab_deep_pile_pile2d_apgd_np1 SCRIPT integration/test_stab_deep_pile.py
+hardcontact_deck_test(NAME stab_deep_pile_pile2d_apgd_np1 HOSTS launcher SCRIPT integration/test_stab_deep_pile.py
   NP 1 LABELS stability ARGS --case pile2d --solver apgd --timeout 90 TIMEOUT 240)
 foreach(_solver apgd uzawa exact)
-  hardcontact_deck_test(NAME stab_deep_pile_column_${_solver}_np1 SCRIPT integration/test_stab_deep_pile.py
+  hardcontact_deck_test(NAME stab_deep_pile_column_${_solver}_np1 HOSTS launcher SCRIPT integration/test_stab_deep_pile.py
     NP 1 LABELS stability ARGS --case column --solver ${_solver} --timeout 40 TIMEOUT 120)
 endforeach()
 foreach(_case pile2d column)
   foreach(_solver apgd uzawa)
-    hardcontact_deck_test(NAME stab_deep_pile_${_case}_${_solver}_soak_np1 SCRIPT integration/test_stab_deep_pile.py
+    hardcontact_deck_test(NAME stab_deep_pile_${_case}_${_solver}_soak_np1 HOSTS launcher SCRIPT integration/test_stab_deep_pile.py
       NP 1 LABELS "stability;soak" ARGS --case ${_case} --solver ${_solver} --steps 20000 --timeout 1700
       TIMEOUT 3600)
   endforeach()
 endforeach()
 
 # degenerate geometry: gap 0, coincident centres, spheres touching walls, all at rest, chains
-hardcontact_deck_test(NAME stab_degenerate_np1 SCRIPT integration/test_stab_degenerate.py NP 1
+hardcontact_deck_test(NAME stab_degenerate_np1 HOSTS launcher SCRIPT integration/test_stab_degenerate.py NP 1
   LABELS stability ARGS --timeout 30 TIMEOUT 240)
-hardcontact_deck_test(NAME stab_degenerate_np2 SCRIPT integration/test_stab_degenerate.py NP 2
+hardcontact_deck_test(NAME stab_degenerate_np2 HOSTS launcher SCRIPT integration/test_stab_degenerate.py NP 2
   LABELS stability ARGS --cases touching,coincident,chain --timeout 30 TIMEOUT 120)
 
 # a closed box of walls with no force: 10^4 steps in CI, 10^5 soak
-hardcontact_deck_test(NAME stab_long_run_np1 SCRIPT integration/test_stab_long_run.py NP 1
+hardcontact_deck_test(NAME stab_long_run_np1 HOSTS launcher SCRIPT integration/test_stab_long_run.py NP 1
   LABELS stability ARGS --steps 10000 --timeout 100 TIMEOUT 120)
-hardcontact_deck_test(NAME stab_long_run_soak_np1 SCRIPT integration/test_stab_long_run.py NP 1
+hardcontact_deck_test(NAME stab_long_run_soak_np1 HOSTS launcher SCRIPT integration/test_stab_long_run.py NP 1
   LABELS "stability;soak" ARGS --steps 100000 --timeout 1700 TIMEOUT 1800)
 
 # the sanitizer build (tests/sanitize.sh): a second build tree under this one, ~20-40 min
