@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 """The fix in a modern LAMMPS through `plugin load` (registered with HOSTS modern).
 
-1. `plugin load` registers fix hardcontact (`plugin list` names it).
+1. `plugin load` registers fix hardcontact (`plugin list` names it); so does
+   LAMMPS_PLUGIN_PATH=<folder of the plugin> with a deck that does not mention the plugin.
 2. The same decks give the same results in the modern LAMMPS and in build/lmp_hardcontact
    (Debian's LAMMPS 29 Sep 2021, the fix built in), at this test's rank count:
      - a random packing of 60 polydisperse spheres falling into a walled box (pair_style none),
@@ -120,6 +121,13 @@ def test():
                       timeout=args.timeout)
     lr.check("fix style plugin hardcontact" in res.stdout,
              "plugin list names fix style hardcontact after plugin load")
+
+    # 1b. or without a line in the deck: LAMMPS loads every *plugin.so in LAMMPS_PLUGIN_PATH
+    res = lr.run_deck(str(args.lmp), DROP_DECK.format(tol=TOL), args.np,
+                      os.path.join(args.workdir, "plugin_path"), timeout=args.timeout,
+                      env={"LAMMPS_PLUGIN_PATH": os.path.dirname(args.lmp.plugin)})
+    z = float(pc.positions(last_frame(res))[0, 2])
+    lr.check(abs(z - 0.5) < 1e-8, "LAMMPS_PLUGIN_PATH loads the fix into an unchanged deck")
 
     # 2. same results on both hosts
     write_box = lambda wd: box_data(os.path.join(wd, "data.box"))
