@@ -49,8 +49,11 @@ apt_update() {
 # ---------------------------------------------------------------- 1. deb-src entry
 have_debsrc() {
   # all Sources targets apt is configured for (downloaded or not): "suite component"
-  apt-get indextargets --no-release-info --format '$(RELEASE) $(COMPONENT)' 'Created-By: Sources' \
-    2>/dev/null | grep -qx "$CODENAME main"
+  # output captured first: under pipefail, grep -q closing the pipe early fails the pipeline
+  local t
+  t="$(apt-get indextargets --no-release-info --format '$(RELEASE) $(COMPONENT)' \
+       'Created-By: Sources' 2>/dev/null || true)"
+  grep -qx "$CODENAME main" <<<"$t"
 }
 if ! have_debsrc; then
   need_root "adding a deb-src entry"
@@ -148,7 +151,10 @@ if [ -f "$STAMP" ] && [ -r "$HDR_DIR/version.h" ]; then
   verbose "LAMMPS headers cached in $HDR_DIR"
 else
   say "caching the LAMMPS $SRC_VERSION headers in ${HDR_DIR#$ROOT/}"
-  have_src() { apt-cache showsrc "$SRC_PKG" 2>/dev/null | grep -qx "Version: $SRC_VERSION"; }
+  # captured first: with several source stanzas (trixie's too) grep -q would close the pipe
+  # early and pipefail would report apt-cache's SIGPIPE as "no such version"
+  have_src() { local t; t="$(apt-cache showsrc "$SRC_PKG" 2>/dev/null || true)";
+               grep -qxF "Version: $SRC_VERSION" <<<"$t"; }
   if ! have_src; then
     apt_update
     have_src || die "the installed liblammps-dev is $PKG_VERSION but apt offers no source package $SRC_PKG=$SRC_VERSION (available: $(apt-cache showsrc "$SRC_PKG" 2>/dev/null | sed -n 's/^Version: //p' | tr '\n' ' ')); the installed liblammps and the header set would be different versions."

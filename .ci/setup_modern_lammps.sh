@@ -42,10 +42,9 @@ check_build() {
   h="$("$d/bin/lmp" -h 2>/dev/null)" || return 1
   grep -q "Large-scale Atomic/Molecular Massively Parallel Simulator - $LAMMPS_DATE" <<<"$h" \
     || return 1
-  for p in GRANULAR PLUGIN; do
-    sed -n '/^Installed packages:/,/^List of individual style options/p' <<<"$h" \
-      | grep -qw "$p" || return 1
-  done
+  local pk
+  pk="$(sed -n '/^Installed packages:/,/^List of individual style options/p' <<<"$h")"
+  for p in GRANULAR PLUGIN; do grep -qw "$p" <<<"$pk" || return 1; done
 }
 
 if [ -f "$STAMP" ]; then
@@ -68,7 +67,9 @@ if [ "${#missing[@]}" -gt 0 ]; then
 fi
 
 # ---------------------------------------------------------------- the trixie source package
-have_src() { apt-cache showsrc "$SRC_PKG" 2>/dev/null | grep -qx "Version: $SRC_VERSION"; }
+# captured first: under pipefail, grep -q closing the pipe early would fail the pipeline
+have_src() { local t; t="$(apt-cache showsrc "$SRC_PKG" 2>/dev/null || true)";
+             grep -qxF "Version: $SRC_VERSION" <<<"$t"; }
 if ! have_src; then
   if [ ! -f "$SRC_LIST" ]; then
     need_root "adding the trixie deb-src entry"
