@@ -25,9 +25,16 @@ struct SolveReport {
   double speed_scale = 0.0;    // V of the row scales (residual.h)
 };
 
+// What a solver needs from the host, asked of the object instead of compared by name.
+struct SolverTraits {
+  bool distributed = true;        // runs with bodies spread over processes (DistributedOps)
+  bool needs_owner_map = false;   // needs ContactProblem::owner (assembles the operator)
+};
+
 class Solver {
  public:
   virtual ~Solver() = default;
+  virtual SolverTraits traits() const { return {}; }
   // mu: multipliers (contact forces, eq. 16), in: start values (resized to the rows, missing
   // ones 0), out: result. u: out, velocities of all bodies, ghosts included.
   virtual SolveReport solve(const ContactProblem &p, const SolverSettings &s,

@@ -203,9 +203,10 @@ void FixHardContact::init()
   if (utils::strmatch(update->integrate_style, "^respa"))
     error->all(FLERR, "Fix hardcontact does not support run_style respa: use verlet");
   check_walls_in_box();
-  if (solver_name_ == "exact" && comm->nprocs > 1)
-    error->all(FLERR, "Fix hardcontact solver exact runs on one processor only (it assembles "
-                      "the whole contact operator): use apgd, pgs or uzawa with mpirun");
+  if (!solver_->traits().distributed && comm->nprocs > 1)
+    error->all(FLERR, "Fix hardcontact solver {} runs on one processor only (it assembles "
+                      "the whole contact operator): use apgd, pgs or uzawa with mpirun",
+               solver_name_);
 
   // Contacts reach r_i + r_j <= 2 r_max; the list must hold every pair that close plus the
   // skin, and ghosts must reach as far (DESIGN.md: with pair_style none LAMMPS sets neither).

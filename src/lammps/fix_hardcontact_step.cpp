@@ -101,7 +101,7 @@ void FixHardContact::build_bodies()
 
   // The exact solver assembles the operator: on one process, ghosts are periodic images.
   problem_.owner.clear();
-  if (solver_name_ == "exact") {
+  if (solver_->traits().needs_owner_map) {
     std::unordered_map<tagint, int> index;
     for (int i = 0; i < nlocal; ++i) index[atom->tag[i]] = i;
     problem_.owner.resize(nall);
