@@ -8,7 +8,7 @@
 #   .cache/lammps-modern/<version>/src/      the LAMMPS src/ tree (headers for the plugin build)
 #   .cache/lammps-modern/<version>/bin/lmp   the binary (MPI, PLUGIN, GRANULAR, JPEG, PNG)
 #
-# Needs root only for apt (packages, the trixie deb-src entry). About 6 minutes on 2 cores.
+# Needs root only for apt (packages, the trixie deb-src entry). About 3 minutes on 2 cores.
 # HARDCONTACT_MODERN_LAMMPS=0 skips it (the tests on the modern host are then not registered).
 set -euo pipefail
 
@@ -109,7 +109,7 @@ rm -f "${tarballs[@]}"
 grep -q "^#define LAMMPS_VERSION \"$LAMMPS_DATE\"" "$TMP/lammps/src/version.h" \
   || die "the source package is not LAMMPS $LAMMPS_DATE (version.h says: $(grep LAMMPS_VERSION "$TMP/lammps/src/version.h"))"
 
-say "building LAMMPS $LAMMPS_DATE (PLUGIN, GRANULAR, MPI, JPEG, PNG) with $JOBS jobs; about 6 minutes on 2 cores (log: ${DEST#$ROOT/}.build.log)"
+say "building LAMMPS $LAMMPS_DATE (PLUGIN, GRANULAR, MPI, JPEG, PNG) with $JOBS jobs; about 3 minutes on 2 cores (log: ${DEST#$ROOT/}.build.log)"
 t0=$SECONDS
 LOG="$CACHE_DIR/lammps-modern/$DIR_VERSION.build.log"
 {
