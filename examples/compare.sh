@@ -7,13 +7,11 @@
 # compare.png. The hardcontact run uses $HARDCONTACT_LMP (default build/lmp_hardcontact); the
 # twin runs with the same launcher (Debian's LAMMPS, GRANULAR package included) or $LMP_SOFT.
 set -euo pipefail
-HERE="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
-ROOT="$(cd "$HERE/.." && pwd)"
+# shellcheck source=common/run_common.sh
+source "$(dirname "${BASH_SOURCE[0]}")/common/run_common.sh"
 SCENE="${1:?usage: compare.sh SCENE [OUTDIR] (SCENE: pile, pour, disc_packing)}"
-OUT="${2:-$ROOT/out/compare/$SCENE}"
-shift $(( $# >= 2 ? 2 : 1 ))
 [ -x "$HERE/$SCENE/run.sh" ] || { echo "compare.sh: no scene $SCENE (examples/$SCENE/run.sh)" >&2; exit 1; }
-mkdir -p "$OUT"
-OUT="$(cd "$OUT" && pwd)"
+hc_outdir "${2:-$ROOT/out/compare/$SCENE}"
+shift $(( $# >= 2 ? 2 : 1 ))
 # run.sh ... both runs the two decks, then compare.py (the table and compare.png)
 bash "$HERE/$SCENE/run.sh" "$OUT" both "$@"

@@ -12,6 +12,7 @@ pi/6 d^3 rho, in 2d too (read_data and `set density`); every deck here relies on
 
 import math
 import os
+import sys
 
 import numpy as np
 
@@ -41,6 +42,15 @@ def write_data(path, box, diameter, density, pos, vel=None, types=None, title="h
         lines.append("%d %s %s %s 0 0 0" % (i + 1, r(float(vel[i, 0])), r(float(vel[i, 1])), r(float(vel[i, 2]))))
     with open(str(path), "w") as f:
         f.write("\n".join(lines) + "\n")
+
+
+def data_args(out, count, seed):
+    """The command line of the scene writers, make_data.py [OUT] [COUNT] [SEED]: (OUT, COUNT,
+    SEED) from sys.argv, each defaulting to the given value."""
+    argv = sys.argv[1:]
+    return (argv[0] if len(argv) > 0 else out,
+            int(argv[1]) if len(argv) > 1 else count,
+            int(argv[2]) if len(argv) > 2 else seed)
 
 
 def jittered_grid(nx, ny, sx, sy, origin, jitter, rng):

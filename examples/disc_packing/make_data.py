@@ -51,9 +51,7 @@ def scene(n=1000, seed=7):
 
 
 def main():
-    out = sys.argv[1] if len(sys.argv) > 1 else "data.packing"
-    n = int(sys.argv[2]) if len(sys.argv) > 2 else 1000
-    seed = int(sys.argv[3]) if len(sys.argv) > 3 else 7
+    out, n, seed = granular.data_args("data.packing", 1000, 7)
     box, d, rho, pos, types = scene(n, seed)
     granular.write_data(out, box, d, rho, pos, None, types,
                         title="disc_packing: %d bidisperse discs (2 and 2.8 mm), seed %d" % (n, seed))

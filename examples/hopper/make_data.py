@@ -36,9 +36,7 @@ def scene(rows=32, seed=3):
 
 
 def main():
-    out = sys.argv[1] if len(sys.argv) > 1 else "data.silo"
-    rows = int(sys.argv[2]) if len(sys.argv) > 2 else 32
-    seed = int(sys.argv[3]) if len(sys.argv) > 3 else 3
+    out, rows, seed = granular.data_args("data.silo", 32, 3)
     box, d, rho, pos, types = scene(rows, seed)
     granular.write_data(out, box, d, rho, pos, None, types,
                         title="silo: %d discs (1.6-2.4 mm) + %d floor discs (1 mm), seed %d"

@@ -5,26 +5,18 @@
 # (log.lammps, silo.dump, contacts.dump, silo.<step>.png during the discharge); then
 # beverloo.py prints the rates and the fit and writes OUTDIR/beverloo.png.
 set -euo pipefail
-HERE="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
-ROOT="$(cd "$HERE/../.." && pwd)"
-OUT="${1:-$ROOT/out/hopper}"
+# shellcheck source=../common/run_common.sh
+source "$(dirname "${BASH_SOURCE[0]}")/../common/run_common.sh"
+hc_outdir "${1:-$ROOT/out/hopper}"
 WIDTHS="${2:-6 8 10 12 16}"
 shift $(( $# >= 2 ? 2 : $# ))
-LMP="${HARDCONTACT_LMP:-$ROOT/build/lmp_hardcontact}"
-[ -x "$LMP" ] || { echo "no $LMP: build first (bash .ci/build.sh)" >&2; exit 1; }
-PY=/usr/bin/python3; [ -x "$PY" ] || PY=python3
-mkdir -p "$OUT"
-OUT="$(cd "$OUT" && pwd)"
 "$PY" "$HERE/make_data.py" "$OUT/data.silo" > /dev/null
 for w in $WIDTHS; do
-  mkdir -p "$OUT/D$w"
-  rm -f "$OUT/D$w"/silo.*.png
   outlet=$(awk -v w="$w" 'BEGIN{printf "%.6g", w/1000}')
-  (cd "$OUT/D$w" && "$LMP" -in "$HERE/in.silo" -var outlet "$outlet" -var data "$OUT/data.silo" \
-      -log log.lammps "$@" > screen.txt) \
-    || { tail -5 "$OUT/D$w/screen.txt" >&2; echo "hopper: D = $w mm failed (see $OUT/D$w)" >&2; exit 1; }
-  awk -v w="$w" '/^Loop time/{t+=$4; n+=$9} END{printf "hopper D = %s mm: %d steps, loop time %.2f s\n", w, n, t}' \
-      "$OUT/D$w/log.lammps"
+  hc_lmp "$OUT/D$w" "silo.*.png" "hopper: D = $w mm" "$LMP" in.silo \
+    -var outlet "$outlet" -var data "$OUT/data.silo" "$@"
+  hc_loop_time "$OUT/D$w/log.lammps" "hopper D = %s mm: %d steps, loop time %.2f s\n" "$w"
 done
+# shellcheck disable=SC2086   # one argument per width
 "$PY" "$HERE/beverloo.py" "$OUT" $WIDTHS
 echo "hopper: output in $OUT"

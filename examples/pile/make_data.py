@@ -17,9 +17,7 @@ D0 = 0.002
 
 
 def main():
-    out = sys.argv[1] if len(sys.argv) > 1 else "data.pile"
-    rows = int(sys.argv[2]) if len(sys.argv) > 2 else 25
-    seed = int(sys.argv[3]) if len(sys.argv) > 3 else 1
+    out, rows, seed = granular.data_args("data.pile", 25, 1)
     box, d, rho, pos, vel = granular.disc_column(WIDTH, rows, D0, spread=0.2, seed=seed, density=2500.0)
     granular.write_data(out, box, d, rho, pos, vel,
                         title="pile: %d discs, d in [1.6, 2.4] mm, width %g m, seed %d" % (len(d), WIDTH, seed))

@@ -4,21 +4,12 @@
 # (OUTDIR/pathlines.png) and prints the final states against the exact event-driven solution.
 #   examples/sticky_particles/run.sh [OUTDIR]
 set -euo pipefail
-HERE="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
-ROOT="$(cd "$HERE/../.." && pwd)"
-OUT="${1:-$ROOT/out/sticky_particles}"
-LMP="${HARDCONTACT_LMP:-$ROOT/build/lmp_hardcontact}"
-[ -x "$LMP" ] || { echo "no $LMP: build first (bash .ci/build.sh)" >&2; exit 1; }
-PY=/usr/bin/python3; [ -x "$PY" ] || PY=python3
-
-mkdir -p "$OUT"
-OUT="$(cd "$OUT" && pwd)"
+# shellcheck source=../common/run_common.sh
+source "$(dirname "${BASH_SOURCE[0]}")/../common/run_common.sh"
+hc_outdir "${1:-$ROOT/out/sticky_particles}"
 for h in 0.01 0.5 1.5; do
-  mkdir -p "$OUT/h$h"
-  cd "$OUT/h$h"
-  "$LMP" -in "$HERE/in.sticky" -var h "$h" -var data "$HERE/data.sticky" -log log.lammps > screen.txt \
-    || { tail -5 screen.txt >&2; echo "sticky_particles: LAMMPS failed for h = $h" >&2; exit 1; }
-  awk -v h="$h" '/^Loop time/{printf "h = %-5s %5d steps, loop time %s s\n", h, $9, $4}' log.lammps
+  hc_lmp "$OUT/h$h" "" "sticky_particles: LAMMPS for h = $h" "$LMP" in.sticky -var h "$h" -var data "$HERE/data.sticky"
+  hc_loop_time "$OUT/h$h/log.lammps" "h = %-5s %5d steps, loop time %s s\n" "$h"
 done
 "$PY" "$HERE/plot_pathlines.py" "$OUT" 0.01 0.5 1.5
 echo "sticky_particles: output in $OUT"
