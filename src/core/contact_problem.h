@@ -14,10 +14,16 @@ static_assert(sizeof(Vec3) == 3 * sizeof(double), "Vec3 arrays are exchanged as 
 // elsewhere (ghosts): their velocities arrive through DistributedOps::forward.
 // inv_mass = 0 marks a body whose velocity the contacts cannot change (an obstacle).
 //
-// Row c couples body i[c] with body j[c] (j < 0 for a wall; the host may encode which one). With unit normal n pointing from
-// i towards j (towards the wall), the linearised non-overlap constraint of eq. 15 reads
+// Row c couples body i[c] with body j[c], or body i[c] with wall w when j[c] = wall_body(w) < 0
+// (the one place that encoding is defined). With unit normal n pointing from i towards j
+// (towards the wall), the linearised non-overlap constraint of eq. 15 reads
 //   g_c(u) = gap_c + h n_c . (u_j - u_i) >= 0        (u_wall = 0),
 // i.e. D_ij(q^n) + h G_ij(q^n) . u >= 0 with G_ij = grad D_ij (eq. 1).
+// The j of a row against wall w (w = 0, 1, ... in the host's order), and back.
+constexpr int wall_body(int w) { return -1 - w; }
+constexpr bool is_wall(int j) { return j < 0; }
+constexpr int wall_index(int j) { return -1 - j; }
+
 struct ContactProblem {
   double h = 0.0;    // time step
   int n_owned = 0;
@@ -60,12 +66,18 @@ struct ContactProblem {
     size.push_back(s);
   }
 
+  // G_c u / h = n_c . (u_j - u_i): the normal approach speed of row c (u_wall = 0). The one
+  // definition of G (eq. 1); DualOperator holds its transpose.
+  double normal_speed(int c, const std::vector<Vec3> &u) const
+  {
+    const int j = body_j[c];
+    const Vec3 du = (is_wall(j) ? Vec3::Zero() : u[j]) - u[body_i[c]];
+    return normal[c].dot(du);
+  }
   // g_c(u): the gap predicted after the step (eq. 15 left-hand side).
   double predicted_gap(int c, const std::vector<Vec3> &u) const
   {
-    const int j = body_j[c];
-    const Vec3 du = (j >= 0 ? u[j] : Vec3::Zero()) - u[body_i[c]];
-    return gap[c] + h * normal[c].dot(du);
+    return gap[c] + h * normal_speed(c, u);
   }
 };
 

@@ -9,11 +9,7 @@ double free_speed_scale(const ContactProblem &p, DistributedOps &ops)
 {
   double v = 0.0;
   const int nc = p.n_contacts();
-  for (int c = 0; c < nc; ++c) {
-    const int j = p.body_j[c];
-    const Vec3 du = (j >= 0 ? p.u_free[j] : Vec3::Zero()) - p.u_free[p.body_i[c]];
-    v = std::max(v, std::abs(p.normal[c].dot(du)));
-  }
+  for (int c = 0; c < nc; ++c) v = std::max(v, std::abs(p.normal_speed(c, p.u_free)));
   return ops.max_all(v);
 }
 
@@ -34,16 +30,6 @@ double clearing_work(const ContactProblem &p, const std::vector<double> &mu)
   for (int c = 0; c < nc; ++c)
     if (p.counted[c] && mu[c] > 0.0) work += mu[c] * std::max(0.0, -p.gap[c]);
   return work;
-}
-
-double residual(const ContactProblem &p, const std::vector<double> &mu,
-                const std::vector<Vec3> &u, const std::vector<double> &scale,
-                DistributedOps &ops)
-{
-  double r = 0.0;
-  const int nc = p.n_contacts();
-  for (int c = 0; c < nc; ++c) r = std::max(r, row_violation(p.predicted_gap(c, u), mu[c], scale[c]));
-  return ops.max_all(r);
 }
 
 bool energy_within_bound(const ContactProblem &p, const std::vector<double> &mu,

@@ -11,6 +11,7 @@
 
 #include "contact_problem.h"
 #include "distributed_ops.h"
+#include "laws/normal.h"
 
 #include <vector>
 
@@ -22,13 +23,11 @@ constexpr double kGapRoundoff = 1.0e-12;
 // Relative round-off of a kinetic energy summed over bodies.
 constexpr double kEnergyRoundoff = 1.0e-14;
 
-// Violation of the complementarity conditions by row c, in units of its scale: the predicted
-// overlap max(0, -g)/scale, and for a pushing row (mu > 0) also the predicted gap |g|/scale
-// that its force should have closed. 0 exactly at the solution of eq. 15.
+// Violation of the complementarity conditions by a row of the paper's law, in units of its
+// scale (laws/normal.h).
 inline double row_violation(double g, double mu, double scale)
 {
-  const double v = mu > 0.0 ? (g < 0.0 ? -g : g) : (g < 0.0 ? -g : 0.0);
-  return v / scale;
+  return NormalLaw::violation(g, mu, scale);
 }
 
 // V: the largest |n_c . (u_free_j - u_free_i)| over all rows of all processes (u_wall = 0).
@@ -52,10 +51,20 @@ double row_scales(const ContactProblem &p, double tol, DistributedOps &ops,
 // overlaps present at q^n, the kinetic energy a step may gain (energy_within_bound).
 double clearing_work(const ContactProblem &p, const std::vector<double> &mu);
 
-// Largest row_violation over all rows of all processes.
+// Largest Law::violation over all rows of all processes.
+template <class Law>
 double residual(const ContactProblem &p, const std::vector<double> &mu,
                 const std::vector<Vec3> &u, const std::vector<double> &scale,
-                DistributedOps &ops);
+                DistributedOps &ops)
+{
+  double r = 0.0;
+  const int nc = p.n_contacts();
+  for (int c = 0; c < nc; ++c) {
+    const double v = Law::violation(p.predicted_gap(c, u), mu[c], scale[c]);
+    r = r > v ? r : v;
+  }
+  return ops.max_all(r);
+}
 
 // Prop. 3 for an inexact solve. With A = h^2 G M^-1 G^T and g(mu) = D + h G u(mu),
 //   1/2 |u(mu)|_M^2 - 1/2 |u_free|_M^2 = mu.g(mu) - mu.D - 1/2 mu.A mu,

@@ -14,7 +14,7 @@ namespace hardcontact {
 struct SolverSettings {
   double tol = 1.0e-4;    // stop when residual() <= tol (relative to each row's scale, residual.h)
   int maxiter = 10000;    // cap on multiplier updates per solve
-  double rho = 0.0;       // Uzawa step; 0 = from step_size_bound() each solve
+  double rho = 0.0;       // Uzawa step; 0 = 1 / the Gershgorin bound each solve (dual_operator.h)
 };
 
 struct SolveReport {

@@ -2,7 +2,8 @@
 
 namespace hardcontact {
 
-void WorkingSet::init(const ContactProblem &p, const std::vector<double> &mu, double tol,
+template <class Law>
+void WorkingSet<Law>::init(const ContactProblem &p, const std::vector<double> &mu, double tol,
                       DistributedOps &ops)
 {
   const int nc = p.n_contacts();
@@ -12,7 +13,7 @@ void WorkingSet::init(const ContactProblem &p, const std::vector<double> &mu, do
   next_check_ = 1;
   for (int c = 0; c < nc; ++c) {
     const int j = p.body_j[c];
-    const Vec3 du = (j >= 0 ? p.u_free[j] : Vec3::Zero()) - p.u_free[p.body_i[c]];
+    const Vec3 du = (is_wall(j) ? Vec3::Zero() : p.u_free[j]) - p.u_free[p.body_i[c]];
     if (mu[c] > 0.0 || p.gap[c] <= p.h * du.norm()) {
       rows_.push_back(c);
       member_[c] = 1;
@@ -20,7 +21,8 @@ void WorkingSet::init(const ContactProblem &p, const std::vector<double> &mu, do
   }
 }
 
-int WorkingSet::expand(const ContactProblem &p, const std::vector<Vec3> &u, double tol)
+template <class Law>
+int WorkingSet<Law>::expand(const ContactProblem &p, const std::vector<Vec3> &u, double tol)
 {
   int added = 0;
   const int nc = p.n_contacts();
@@ -34,7 +36,8 @@ int WorkingSet::expand(const ContactProblem &p, const std::vector<Vec3> &u, doub
   return added;
 }
 
-WorkingSet::Verdict WorkingSet::check(int k, double residual, double tol,
+template <class Law>
+typename WorkingSet<Law>::Verdict WorkingSet<Law>::check(int k, double residual, double tol,
                                       const ContactProblem &p, const std::vector<double> &mu,
                                       const std::vector<Vec3> &u, DistributedOps &ops)
 {
@@ -45,5 +48,7 @@ WorkingSet::Verdict WorkingSet::check(int k, double residual, double tol,
   if (residual > tol) return Verdict::Iterate;
   return energy_within_bound(p, mu, u, ops) ? Verdict::Converged : Verdict::Iterate;
 }
+
+template class WorkingSet<NormalLaw>;
 
 }    // namespace hardcontact

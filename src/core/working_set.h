@@ -13,6 +13,8 @@
 
 namespace hardcontact {
 
+// Law: the contact law of the rows (laws/normal.h): its violation measure.
+template <class Law>
 class WorkingSet {
  public:
   enum class Verdict { Iterate, Grown, Converged };
@@ -36,7 +38,7 @@ class WorkingSet {
   const std::vector<int> &rows() const { return rows_; }
   bool contains(int c) const { return member_[c] != 0; }
   // Row c's violation in units of its scale, the quantity compared with tol.
-  double violation(int c, double g, double mu) const { return row_violation(g, mu, scale_[c]); }
+  double violation(int c, double g, double mu) const { return Law::violation(g, mu, scale_[c]); }
   const std::vector<double> &scales() const { return scale_; }
   double speed_scale() const { return speed_scale_; }
 

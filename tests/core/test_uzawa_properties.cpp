@@ -8,7 +8,7 @@
 //  - the step size: dual_operator_bound(p) bounds the largest eigenvalue of
 //    A = h^2 G M^-1 G^T (dense, Eigen) and is within a factor max-degree of it; rho = 1/bound;
 //    a rho above 2 / lambda_max does not converge.
-#include "step_size.h"
+#include "dual_operator.h"
 #include "uzawa.h"
 
 #include "core_test_util.h"
@@ -94,7 +94,7 @@ void expect_kkt(const ContactProblem &p, const std::vector<double> &mu,
     fscale += p.h * mu[c];
   }
   EXPECT_LE(sum_mu_g, tol * sum_mu_size);    // complementarity, summed
-  // Stationarity: eq. 16 re-assembled densely, independent of velocity_update.cpp.
+  // Stationarity: eq. 16 re-assembled densely, independent of dual_operator.cpp.
   fscale += hctest::momentum_scale(p, p.u_free) / p.n_bodies();
   EXPECT_LE(hctest::eq16_defect(p, mu, u), 1e-13 * fscale);
 }
@@ -349,7 +349,7 @@ TEST(UzawaLemma1, RedundantHexPackingUniqueVelocitiesNotMultipliers)
 }
 
 // ---------------------------------------------------------------------------------------
-// The step size: Gershgorin bound of the dual operator (step_size.h).
+// The step size: Gershgorin bound of the dual operator (dual_operator.h).
 
 TEST(StepSize, BoundsLargestEigenvalueWithinMaxDegree)
 {

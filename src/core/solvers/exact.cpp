@@ -1,52 +1,17 @@
 #include "exact.h"
 
-#include "residual.h"
-#include "velocity_update.h"
+#include "../dual_operator.h"
+#include "../residual.h"
 
 #include <Eigen/SparseCholesky>
 #include <Eigen/SparseCore>
 
 #include <algorithm>
 #include <cmath>
-#include <stdexcept>
 
 namespace hardcontact {
 
-namespace {
-
 using SparseMatrix = Eigen::SparseMatrix<double>;
-
-// A = h^2 G M^-1 G^T: rows c and d sharing body k couple by h^2 w_k s_c s_d n_c.n_d, with
-// s = -1 on body i and +1 on body j (G_ij of eq. 1). Ghost copies count as their owner.
-SparseMatrix assemble(const ContactProblem &p)
-{
-  const int nc = p.n_contacts();
-  auto body_of = [&](int b) {
-    if (b < p.n_owned) return b;
-    const int o = p.owner.empty() ? -1 : p.owner[b];
-    if (o < 0) throw std::runtime_error("solver exact needs every body on one process");
-    return o;
-  };
-  std::vector<std::vector<std::pair<int, double>>> rows_of(p.n_owned);    // (row, sign)
-  for (int c = 0; c < nc; ++c) {
-    rows_of[body_of(p.body_i[c])].push_back({c, -1.0});
-    if (p.body_j[c] >= 0) rows_of[body_of(p.body_j[c])].push_back({c, 1.0});
-  }
-  std::vector<Eigen::Triplet<double>> t;
-  const double h2 = p.h * p.h;
-  for (int k = 0; k < p.n_owned; ++k) {
-    const double w = h2 * p.inv_mass[k];
-    if (w == 0.0) continue;
-    for (const auto &a : rows_of[k])
-      for (const auto &b : rows_of[k])
-        t.emplace_back(a.first, b.first, w * a.second * b.second * p.normal[a.first].dot(p.normal[b.first]));
-  }
-  SparseMatrix A(nc, nc);
-  A.setFromTriplets(t.begin(), t.end());
-  return A;
-}
-
-}    // namespace
 
 SolveReport Exact::solve(const ContactProblem &p, const SolverSettings &s, DistributedOps &ops,
                          std::vector<double> &mu, std::vector<Vec3> &u)
@@ -55,8 +20,10 @@ SolveReport Exact::solve(const ContactProblem &p, const SolverSettings &s, Distr
   mu.assign(nc, 0.0);    // a cold start: the method is finite from mu = 0
   SolveReport report;
 
-  const SparseMatrix A = assemble(p);
-  velocities_from_multipliers(p, std::vector<int>(), mu, u, ops);    // u = u_free
+  DualOperator op;
+  op.bind(p, ops);
+  const SparseMatrix A = op.assembled();
+  op.free_velocities(u);
   Eigen::VectorXd b(nc), scale(nc);
   double diag_max = 0.0;
   for (int c = 0; c < nc; ++c) {
@@ -133,10 +100,10 @@ SolveReport Exact::solve(const ContactProblem &p, const SolverSettings &s, Distr
     }
   }
   for (int c = 0; c < nc; ++c) mu[c] = m[c];
-  velocities_from_multipliers(p, mu, u, ops);
+  op.velocities(mu, u);
   std::vector<double> row_scale_of;
   report.speed_scale = row_scales(p, s.tol, ops, row_scale_of);
-  report.residual = residual(p, mu, u, row_scale_of, ops);
+  report.residual = residual<NormalLaw>(p, mu, u, row_scale_of, ops);
   report.converged = report.converged && report.residual <= s.tol;
   return report;
 }

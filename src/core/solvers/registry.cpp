@@ -1,5 +1,5 @@
 // The `solver` keyword's table: adding an algorithm is adding a line here and a file.
-#include "solver.h"
+#include "../solver.h"
 #include "apgd.h"
 #include "exact.h"
 #include "pgs.h"

@@ -5,7 +5,7 @@
 // needs every body's rows (ghosts must be images of owned bodies, ContactProblem::owner).
 #pragma once
 
-#include "solver.h"
+#include "../solver.h"
 
 namespace hardcontact {
 

@@ -1,0 +1,126 @@
+#include "apgd.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace hardcontact {
+
+// The dual of eq. 15 as a minimisation over the law's set:
+//   phi(mu) = 1/2 mu.A mu + b.mu,  grad phi = A mu + b = g(u(mu)),  A = h^2 G M^-1 G^T,
+// so the Uzawa step of section 3.3 is projected gradient descent with step rho, and
+// phi(mu) = 1/2 mu.(g(mu) + b) costs no extra product.
+template <class Law>
+void ApgdSolver<Law>::gaps(const std::vector<double> &m, std::vector<double> &g,
+                           std::vector<Vec3> &u)
+{
+  this->op_.velocities(this->set_.rows(), m, u);
+  for (const int c : this->set_.rows()) g[c] = this->op_.gap(c, u);
+}
+
+template <class Law>
+void ApgdSolver<Law>::restart(const std::vector<double> &mu)
+{
+  theta_ = 1.0;
+  for (const int c : this->set_.rows()) {
+    y_[c] = mu[c];
+    gy_[c] = this->g_[c];
+  }
+}
+
+template <class Law>
+void ApgdSolver<Law>::start(const SolverSettings &s, std::vector<double> &mu,
+                            std::vector<Vec3> &u)
+{
+  const int nc = this->op_.problem().n_contacts();
+  for (auto *v : {&b_, &y_, &gy_, &next_, &gnext_}) v->assign(nc, 0.0);
+  std::fill(this->g_.begin(), this->g_.end(), 0.0);
+  this->op_.free_velocities(u);
+  for (int c = 0; c < nc; ++c) b_[c] = this->op_.gap(c, u);
+  gaps(mu, this->g_, u);
+  // Start L below the Gershgorin bound of the working set: backtracking raises it as needed.
+  L_ = s.rho > 0.0 ? 1.0 / s.rho : 0.25 * this->op_.bound(this->set_.rows());
+  restart(mu);
+  this->rho_ = L_ > 0.0 ? 1.0 / L_ : 0.0;
+}
+
+// g(mu) is maintained by the iteration: no product needed for the residual.
+template <class Law>
+double ApgdSolver<Law>::set_residual(const std::vector<double> &mu, const std::vector<Vec3> &)
+{
+  double r = 0.0;
+  for (const int c : this->set_.rows()) r = std::max(r, this->set_.violation(c, this->g_[c], mu[c]));
+  return r;
+}
+
+// New rows enter at mu = y = 0 and the momentum of the others is kept: restarting here would
+// turn the cascade of a large impact (rows joining a few at a time) into plain gradient steps.
+// One extra product gives g(y) on the grown set; then back to u = u(mu), which the next check
+// and the answer must see.
+template <class Law>
+void ApgdSolver<Law>::grown(const SolverSettings &, std::vector<double> &mu, std::vector<Vec3> &u)
+{
+  for (const int c : this->set_.rows()) this->g_[c] = this->op_.gap(c, u);    // u = u(mu)
+  gaps(y_, gy_, u);
+  this->op_.velocities(this->set_.rows(), mu, u);
+}
+
+template <class Law>
+bool ApgdSolver<Law>::step(const SolverSettings &, std::vector<double> &mu, std::vector<Vec3> &u)
+{
+  if (L_ <= 0.0) return false;
+  const ContactProblem &p = this->op_.problem();
+  const std::vector<int> &rows = this->set_.rows();
+  std::vector<double> &g = this->g_;
+  // Projected step from y with backtracking: accept when the quadratic model with L bounds
+  // phi at the trial point (this is what makes 1/L a valid step without knowing ||A||).
+  double sums[5];
+  for (;;) {
+    for (const int c : rows) next_[c] = Law::project(y_[c] - gy_[c] / L_);
+    gaps(next_, gnext_, u);
+    // phi(y), phi(next), gy.(next - y), |next - y|^2, gy.(next - mu) - each row counted once
+    for (double &v : sums) v = 0.0;
+    for (const int c : rows) {
+      if (!p.counted[c]) continue;
+      const double d = next_[c] - y_[c];
+      sums[0] += 0.5 * y_[c] * (gy_[c] + b_[c]);
+      sums[1] += 0.5 * next_[c] * (gnext_[c] + b_[c]);
+      sums[2] += gy_[c] * d;
+      sums[3] += d * d;
+      sums[4] += gy_[c] * (next_[c] - mu[c]);
+    }
+    this->op_.ops().sum_all(sums, 5);
+    const double slack = 1e-12 * (std::abs(sums[0]) + std::abs(sums[1]));
+    if (sums[1] <= sums[0] + sums[2] + 0.5 * L_ * sums[3] + slack) break;
+    // A step too small to change anything cannot fail the test for a real reason (round-off
+    // in phi): accept it rather than let L run away.
+    if (!(L_ < 1e300) || sums[3] == 0.0) break;
+    L_ *= 2.0;
+  }
+  if (!(L_ < 1e300)) {    // the estimate broke down: report the iterate, unconverged
+    this->op_.velocities(rows, mu, u);
+    this->rho_ = 1.0 / L_;
+    return false;
+  }
+
+  // Nesterov momentum, dropped when it points uphill (gradient restart).
+  double theta_next = 0.5 * (1.0 + std::sqrt(1.0 + 4.0 * theta_ * theta_));
+  double beta = (theta_ - 1.0) / theta_next;
+  if (sums[4] > 0.0) {
+    theta_next = 1.0;
+    beta = 0.0;
+  }
+  for (const int c : rows) {
+    y_[c] = next_[c] + beta * (next_[c] - mu[c]);
+    gy_[c] = gnext_[c] + beta * (gnext_[c] - g[c]);
+    mu[c] = next_[c];
+    g[c] = gnext_[c];
+  }
+  theta_ = theta_next;
+  L_ *= 0.9;    // let the estimate come back down where the problem is softer
+  this->rho_ = 1.0 / L_;
+  return true;
+}
+
+template class ApgdSolver<NormalLaw>;
+
+}    // namespace hardcontact

@@ -1,0 +1,37 @@
+// Accelerated projected gradient on the dual of eq. 15 (Nesterov / FISTA), with gradient
+// restart (O'Donoghue & Candes 2015) and backtracking on the Lipschitz estimate L, over the
+// same working set as Uzawa. It needs no step bound from the user and converges in about
+// sqrt(cond) iterations instead of cond for Uzawa.
+#pragma once
+
+#include "../laws/normal.h"
+#include "iterative_solver.h"
+
+namespace hardcontact {
+
+template <class Law>
+class ApgdSolver : public IterativeSolver<Law> {
+ protected:
+  void start(const SolverSettings &s, std::vector<double> &mu, std::vector<Vec3> &u) override;
+  bool step(const SolverSettings &s, std::vector<double> &mu, std::vector<Vec3> &u) override;
+  void grown(const SolverSettings &s, std::vector<double> &mu, std::vector<Vec3> &u) override;
+  double set_residual(const std::vector<double> &mu, const std::vector<Vec3> &u) override;
+
+ private:
+  // g(m) on the working set, leaving u = u(m)
+  void gaps(const std::vector<double> &m, std::vector<double> &g, std::vector<Vec3> &u);
+  void restart(const std::vector<double> &mu);
+
+  double L_ = 0.0;        // Lipschitz estimate of grad phi
+  double theta_ = 1.0;    // Nesterov's sequence
+  // per row, kept between solves: no allocation per step (g(mu) is the base's g_)
+  std::vector<double> b_;       // g at mu = 0: the linear term of the dual
+  std::vector<double> y_;       // extrapolated point
+  std::vector<double> gy_;      // g at y (g is affine in mu, so no extra product)
+  std::vector<double> next_;    // trial point
+  std::vector<double> gnext_;
+};
+
+using Apgd = ApgdSolver<NormalLaw>;
+
+}    // namespace hardcontact

@@ -1,0 +1,23 @@
+// The paper's algorithm (section 3.3): projected gradient ascent on the dual of eq. 15,
+// iterating on a working set of rows (Remark 7, working_set.h).
+#pragma once
+
+#include "../laws/normal.h"
+#include "iterative_solver.h"
+
+namespace hardcontact {
+
+template <class Law>
+class UzawaSolver : public IterativeSolver<Law> {
+ protected:
+  void start(const SolverSettings &s, std::vector<double> &mu, std::vector<Vec3> &u) override;
+  bool step(const SolverSettings &s, std::vector<double> &mu, std::vector<Vec3> &u) override;
+  void grown(const SolverSettings &s, std::vector<double> &mu, std::vector<Vec3> &u) override;
+
+ private:
+  double choose_rho(const SolverSettings &s);
+};
+
+using Uzawa = UzawaSolver<NormalLaw>;
+
+}    // namespace hardcontact
