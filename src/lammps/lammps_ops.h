@@ -2,23 +2,38 @@
 // forward communication (LAMMPS's swap pattern), reductions go over the world communicator.
 #pragma once
 
+#include "../core/contact_problem.h"
 #include "../core/distributed_ops.h"
 #include "lammps_compat.h"
+
+#include "error.h"
 
 #include <mpi.h>
 
 namespace hardcontact {
 
+constexpr int kDoublesPerVec3 = static_cast<int>(sizeof(Vec3) / sizeof(double));
+
 class LammpsOps : public DistributedOps {
  public:
-  void attach(LAMMPS_NS::Fix *fix, LAMMPS_NS::Comm *comm, MPI_Comm world)
+  // The widest value forwarded per body: one Vec3 (u_free and the owners' coordinates in the
+  // step, u in the solvers; the solvers' contact degrees are one double). Sizes comm_forward.
+  static constexpr int kMaxPerBody = kDoublesPerVec3;
+
+  void attach(LAMMPS_NS::Fix *fix, LAMMPS_NS::Comm *comm, LAMMPS_NS::Error *error,
+              MPI_Comm world)
   {
     fix_ = fix;
+    error_ = error;
     comm_ = comm;
     world_ = world;
   }
   void forward(double *data, int per_body) override
   {
+    // LAMMPS sized its buffers for comm_forward = kMaxPerBody doubles per atom
+    if (per_body > kMaxPerBody)
+      error_->one(FLERR, "Fix hardcontact: forward of {} values per atom exceeds comm_forward {}",
+                  per_body, kMaxPerBody);
     data_ = data;
     per_body_ = per_body;
     compat::forward_comm(comm_, fix_);
@@ -47,6 +62,7 @@ class LammpsOps : public DistributedOps {
  private:
   LAMMPS_NS::Fix *fix_ = nullptr;
   LAMMPS_NS::Comm *comm_ = nullptr;
+  LAMMPS_NS::Error *error_ = nullptr;
   MPI_Comm world_ = MPI_COMM_NULL;
   double *data_ = nullptr;
   int per_body_ = 0;

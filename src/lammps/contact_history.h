@@ -1,0 +1,65 @@
+// The contact values of the last step (the multipliers today: warm start of the next solve),
+// kept per atom so they follow atoms through neighbour rebuilds, processor migration, sorting
+// and restart files. Atom i keeps (partner, k values) for each of its active contacts:
+// partner = atom ID of the other sphere, or the row's wall code j < 0 (contact_source.h).
+// Both atoms of a pair keep the entry, so each of the two processes that hold a pair across
+// processors finds the same values. k = the law's block size (1: the normal force).
+#pragma once
+
+#include "../core/contact_problem.h"
+
+#include "lmptype.h"
+
+#include <vector>
+
+namespace LAMMPS_NS {
+class Memory;
+}
+
+namespace hardcontact {
+
+class ContactHistory {
+ public:
+  ContactHistory(LAMMPS_NS::Memory *memory, int values_per_contact) :
+      memory_(memory), k_(values_per_contact)
+  {
+  }
+  ~ContactHistory();
+  ContactHistory(const ContactHistory &) = delete;
+  ContactHistory &operator=(const ContactHistory &) = delete;
+
+  int values_per_contact() const { return k_; }
+
+  // Start values of the rows: mu[k_ c + m] = value m stored for row c's pair, 0 if none.
+  void load(const ContactProblem &p, const LAMMPS_NS::tagint *tag,
+            std::vector<double> &mu) const;
+  // Replaces the owned atoms' entries by the rows with a non-zero first value.
+  void store(const ContactProblem &p, const LAMMPS_NS::tagint *tag,
+             const std::vector<double> &mu);
+
+  // Per-atom storage (the fix's grow/copy/set_arrays).
+  void grow(int nmax);
+  void copy(int from, int to);
+  void clear(int i) { data_[i][0] = 0.0; }
+
+  // Exchange and restart buffers: count, then (partner, k values) per contact.
+  int pack(int i, double *buf) const;
+  int unpack(int i, const double *buf);
+  int packed_size(int i) const { return 1 + stride() * count(i); }
+  int max_packed_size() const { return 1 + stride() * capacity_; }
+
+ private:
+  int stride() const { return 1 + k_; }
+  int count(int i) const { return static_cast<int>(data_[i][0]); }
+  void reserve(int capacity);
+  void add(int i, double partner, const double *values);
+  const double *find(int i, double partner) const;
+
+  LAMMPS_NS::Memory *memory_;
+  int k_;
+  double **data_ = nullptr;    // nmax rows of 1 + stride() capacity_
+  int nmax_ = 0;
+  int capacity_ = 0;
+};
+
+}    // namespace hardcontact

@@ -1,0 +1,33 @@
+// Eq. 19 and the spins, plus the guarantee that no contact was missed (the skin look-ahead).
+#pragma once
+
+#include "../core/contact_problem.h"
+
+#include "pointers.h"
+
+#include <mpi.h>
+#include <vector>
+
+namespace hardcontact {
+
+class Integrate : protected LAMMPS_NS::Pointers {
+ public:
+  Integrate(LAMMPS_NS::LAMMPS *lmp, int groupbit) : Pointers(lmp), groupbit_(groupbit) {}
+  ~Integrate() override;
+  Integrate(const Integrate &) = delete;
+  Integrate &operator=(const Integrate &) = delete;
+
+  // After each neighbour list build: the positions the skin is counted from.
+  void store_build_positions();
+  // v = u, x += h u for the group; stops with an error if a contact may have been missed, and
+  // returns true if the list must be rebuilt before the next step.
+  bool move(const std::vector<Vec3> &u);
+
+ private:
+  int groupbit_;
+  std::vector<Vec3> xhold_;    // owned positions at the last list build
+  MPI_Datatype moves_type_ = MPI_DATATYPE_NULL;
+  MPI_Op moves_op_ = MPI_OP_NULL;
+};
+
+}    // namespace hardcontact

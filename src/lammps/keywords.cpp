@@ -1,0 +1,154 @@
+#include "keywords.h"
+
+#include "domain.h"
+#include "error.h"
+#include "lammps.h"
+#include "utils.h"
+
+#include <cmath>
+#include <cstdlib>
+#include <cstring>
+
+using namespace LAMMPS_NS;
+
+namespace hardcontact {
+namespace {
+
+// A parser reads the values of its keyword (values[0..nvalues-1]) into the options.
+using Parser = void (*)(LAMMPS *lmp, char **values, FixOptions &options);
+
+struct Keyword {
+  const char *name;
+  int nvalues;
+  Parser parse;
+  const char *doc;
+};
+
+double number(LAMMPS *lmp, const char *keyword, const char *word)
+{
+  if (!utils::is_double(word))
+    lmp->error->all(FLERR, "Fix hardcontact {}: expected a number, got '{}'", keyword, word);
+  // Checked before utils::numeric: modern LAMMPS stops there on 1e999 with a message that
+  // does not name the keyword.
+  if (!std::isfinite(std::strtod(word, nullptr)))
+    lmp->error->all(FLERR, "Fix hardcontact {}: value '{}' is not a finite number", keyword, word);
+  return utils::numeric(FLERR, word, false, lmp);
+}
+
+std::string joined(const std::vector<std::string> &names)
+{
+  std::string s;
+  for (const auto &n : names) s += (s.empty() ? "" : ", ") + n;
+  return s;
+}
+
+void parse_solver(LAMMPS *lmp, char **values, FixOptions &o)
+{
+  o.solver_name = values[0];
+  if (!make_solver(o.solver_name))
+    lmp->error->all(FLERR, "Fix hardcontact solver '{}' is unknown: use one of {}", o.solver_name,
+                    joined(solver_names()));
+}
+
+void parse_tol(LAMMPS *lmp, char **values, FixOptions &o)
+{
+  o.settings.tol = number(lmp, "tol", values[0]);
+  if (o.settings.tol <= 0.0 || o.settings.tol >= 1.0)
+    lmp->error->all(FLERR, "Fix hardcontact tol must be in (0, 1) (an overlap relative to the "
+                           "contact size), got {}", values[0]);
+}
+
+void parse_maxiter(LAMMPS *lmp, char **values, FixOptions &o)
+{
+  if (!utils::is_integer(values[0]))
+    lmp->error->all(FLERR, "Fix hardcontact maxiter: expected an integer, got '{}'", values[0]);
+  const bigint maxiter = utils::bnumeric(FLERR, values[0], false, lmp);
+  if (maxiter < 1 || maxiter > MAXSMALLINT)
+    lmp->error->all(FLERR, "Fix hardcontact maxiter must be at least 1 and at most {}, got {}",
+                    MAXSMALLINT, values[0]);
+  o.settings.maxiter = static_cast<int>(maxiter);
+}
+
+void parse_rho(LAMMPS *lmp, char **values, FixOptions &o)
+{
+  o.settings.rho = number(lmp, "rho", values[0]);
+  if (o.settings.rho <= 0.0)
+    lmp->error->all(FLERR, "Fix hardcontact rho must be positive (omit it for the automatic "
+                           "step), got {}", values[0]);
+}
+
+void parse_warmstart(LAMMPS *lmp, char **values, FixOptions &o)
+{
+  const std::string value = values[0];
+  if (value != "yes" && value != "no")
+    lmp->error->all(FLERR, "Fix hardcontact warmstart must be yes or no, got '{}'", value);
+  o.warmstart = value == "yes";
+}
+
+void parse_wall(LAMMPS *lmp, char **values, FixOptions &o)
+{
+  const std::string plane = values[0];
+  int dim = -1;
+  if (plane == "xplane") dim = 0;
+  else if (plane == "yplane") dim = 1;
+  else if (plane == "zplane") dim = 2;
+  else
+    lmp->error->all(FLERR, "Fix hardcontact wall '{}' is unknown: use xplane, yplane or zplane",
+                    plane);
+  if (dim == 2 && lmp->domain->dimension == 2)
+    lmp->error->all(FLERR, "Fix hardcontact wall zplane is not allowed in a 2d simulation");
+  const bool has_lo = strcmp(values[1], "NULL") != 0;
+  const bool has_hi = strcmp(values[2], "NULL") != 0;
+  if (!has_lo && !has_hi)
+    lmp->error->all(FLERR, "Fix hardcontact wall {}: lo and hi cannot both be NULL", plane);
+  double lo = 0.0, hi = 0.0;
+  if (has_lo) lo = number(lmp, "wall lo", values[1]);
+  if (has_hi) hi = number(lmp, "wall hi", values[2]);
+  if (has_lo && has_hi && lo >= hi)
+    lmp->error->all(FLERR, "Fix hardcontact wall {}: lo ({}) must be below hi ({})", plane, lo,
+                    hi);
+  if (has_lo) o.walls.push_back({dim, true, lo});
+  if (has_hi) o.walls.push_back({dim, false, hi});
+}
+
+const Keyword keywords[] = {
+    {"solver", 1, parse_solver, "solver name: apgd (default), pgs, uzawa or exact"},
+    {"tol", 1, parse_tol, "tol value: row tolerance relative to the row scale, in (0, 1)"},
+    {"maxiter", 1, parse_maxiter, "maxiter N: at most N solver iterations per solve"},
+    {"rho", 1, parse_rho, "rho value: fixed solver step (omit: automatic)"},
+    {"warmstart", 1, parse_warmstart, "warmstart yes/no: start from the last step's forces"},
+    {"wall", 3, parse_wall, "wall xplane|yplane|zplane lo hi: flat walls, NULL for none"},
+};
+
+// "solver, tol, ... or wall", from the table.
+std::string keyword_list()
+{
+  std::string s;
+  const int n = static_cast<int>(sizeof(keywords) / sizeof(keywords[0]));
+  for (int k = 0; k < n; ++k) s += (k == 0 ? "" : k + 1 < n ? ", " : " or ") + std::string(keywords[k].name);
+  return s;
+}
+
+}    // namespace
+
+FixOptions parse_keywords(LAMMPS *lmp, int narg, char **arg, int first)
+{
+  FixOptions options;
+  int iarg = first;
+  while (iarg < narg) {
+    const Keyword *found = nullptr;
+    for (const Keyword &k : keywords)
+      if (strcmp(arg[iarg], k.name) == 0) found = &k;
+    if (!found)
+      lmp->error->all(FLERR, "Fix hardcontact keyword '{}' is unknown: use {}", arg[iarg],
+                      keyword_list());
+    if (iarg + found->nvalues >= narg)
+      lmp->error->all(FLERR, "Fix hardcontact {} needs {} value(s) after it", found->name,
+                      found->nvalues);
+    found->parse(lmp, arg + iarg + 1, options);
+    iarg += 1 + found->nvalues;
+  }
+  return options;
+}
+
+}    // namespace hardcontact

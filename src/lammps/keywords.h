@@ -1,0 +1,28 @@
+// The keywords of `fix ID group hardcontact keyword values ...`, read in one place from one
+// table (keywords.cpp): each row is a name, its number of values, its parser and its doc line.
+// A new keyword is a row there, a field here, and a paragraph in doc/fix_hardcontact.md.
+#pragma once
+
+#include "../core/plane_wall.h"
+#include "../core/solver.h"
+
+#include <string>
+#include <vector>
+
+namespace LAMMPS_NS {
+class LAMMPS;
+}
+
+namespace hardcontact {
+
+struct FixOptions {
+  std::string solver_name = "apgd";
+  SolverSettings settings;
+  std::vector<PlaneWall> walls;
+  bool warmstart = true;
+};
+
+// Parses arg[first..narg-1]; stops with an error that names the keyword and what to write.
+FixOptions parse_keywords(LAMMPS_NS::LAMMPS *lmp, int narg, char **arg, int first);
+
+}    // namespace hardcontact

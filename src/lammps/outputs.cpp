@@ -1,0 +1,183 @@
+#include "outputs.h"
+
+#include "sources/contact_source.h"
+
+#include "../core/velocity_update.h"
+
+#include "atom.h"
+#include "comm.h"
+#include "error.h"
+#include "fix.h"
+#include "memory.h"
+#include "update.h"
+
+using namespace LAMMPS_NS;
+
+namespace hardcontact {
+
+Outputs::~Outputs()
+{
+  memory->destroy(fix_->array_atom);
+  memory->destroy(fix_->array_local);
+}
+
+double Outputs::memory_usage() const
+{
+  double bytes = kPerAtomColumns * sizeof(double) * atom->nmax;
+  bytes += kLocalColumns * sizeof(double) * nlocal_rows_max_;
+  return bytes;
+}
+
+// Per-atom output follows its atom when atoms migrate or are sorted (it is computed in
+// initial_integrate, before the exchange of the same step).
+void Outputs::grow_per_atom(int nmax)
+{
+  memory->grow(fix_->array_atom, nmax, kPerAtomColumns, "hardcontact:array_atom");
+}
+
+void Outputs::clear_per_atom(int i)
+{
+  for (int k = 0; k < kPerAtomColumns; ++k) fix_->array_atom[i][k] = 0.0;
+}
+
+void Outputs::start_of_run(const ContactProblem &p, const std::vector<PlaneWall> &walls,
+                           double tol)
+{
+  overlap_diagnostics(p, nullptr, 0.0, walls);
+  diag_[ITERATIONS] = diag_[CANDIDATES] = diag_[ACTIVE] = diag_[RESIDUAL] = 0.0;
+  diag_[RHO] = diag_[ROUNDS] = diag_[CLEARING_WORK] = 0.0;
+  diag_[MAXITER_HITS] = static_cast<double>(maxiter_hits_);
+  if (diag_[MAX_OVERLAP_RELATIVE] > tol && comm->me == 0)
+    error->warning(FLERR, "Fix hardcontact: the run starts with overlapping spheres (largest "
+                          "overlap {:.6g}, {:.3g} of the contact size); each step clears at most "
+                          "h x the velocity the forces give in one step, plus 2 tol x its row scale, so "
+                          "that no energy explodes (see the doc page)",
+                   diag_[MAX_OVERLAP], diag_[MAX_OVERLAP_RELATIVE]);
+  fix_->size_local_rows = 0;
+  for (int i = 0; i < atom->nlocal; ++i) clear_per_atom(i);
+}
+
+void Outputs::record_step(const StepResult &r, const ContactProblem &p,
+                          const std::vector<double> &mu, const std::vector<Vec3> &u,
+                          const std::vector<PlaneWall> &walls, const SolverSettings &settings)
+{
+  record_solve(r, settings);
+  per_atom_and_local(p, mu);
+  overlap_diagnostics(p, &u, update->dt, walls);
+}
+
+void Outputs::record_solve(const StepResult &r, const SolverSettings &settings)
+{
+  if (!r.report.converged) {
+    ++maxiter_hits_;
+    ++maxiter_hits_run_;
+    if (maxiter_hits_run_ == 1 && comm->me == 0)
+      error->warning(FLERR, "Fix hardcontact: the solve of step {} stopped unconverged after {} "
+                            "iterations (maxiter {}) with residual {:.3g} > tol {:.3g}; overlaps "
+                            "up to that size may remain. Raise maxiter or tol (counted in "
+                            "f_{}[{}]; reported once per run)",
+                     update->ntimestep, r.report.iterations, settings.maxiter, r.report.residual,
+                     settings.tol, fix_->id, MAXITER_HITS + 1);
+  }
+  diag_[CLEARING_WORK] = r.clearing_work;
+  diag_[ITERATIONS] = r.iterations;
+  diag_[RESIDUAL] = r.report.residual;
+  diag_[RHO] = r.report.rho;
+  diag_[ROUNDS] = r.rounds;
+  diag_[MAXITER_HITS] = static_cast<double>(maxiter_hits_);
+}
+
+void Outputs::end_of_run(const SolverSettings &settings)
+{
+  if (maxiter_hits_run_ > 0 && comm->me == 0)
+    error->warning(FLERR, "Fix hardcontact: {} solve(s) of this run stopped unconverged "
+                          "(maxiter {})",
+                   maxiter_hits_run_, settings.maxiter);
+  maxiter_hits_run_ = 0;
+}
+
+// A row is counted once over all processes (ContactProblem::counted): a pair across processes
+// is held by both, and counted by the side whose atom has the smaller ID.
+void Outputs::per_atom_and_local(const ContactProblem &p, const std::vector<double> &mu)
+{
+  const int nlocal = atom->nlocal;
+  const int nc = p.n_contacts();
+  double **array_atom = fix_->array_atom;
+  contact_forces(p, mu, force_);
+
+  for (int i = 0; i < nlocal; ++i) {
+    array_atom[i][0] = 0.0;
+    for (int k = 0; k < 3; ++k) array_atom[i][k + 1] = force_[i][k];
+  }
+  double counts[2] = {0.0, 0.0};    // rows, active rows
+  int nrows = 0;
+  for (int c = 0; c < nc; ++c) {
+    const int i = p.body_i[c], j = p.body_j[c];
+    const bool here = p.counted[c] != 0;
+    if (here) counts[0] += 1.0;
+    if (mu[c] <= 0.0) continue;
+    if (i < nlocal) array_atom[i][0] += 1.0;
+    if (!is_wall(j) && j < nlocal) array_atom[j][0] += 1.0;
+    if (here) {
+      counts[1] += 1.0;
+      ++nrows;
+    }
+  }
+  double all[2];
+  MPI_Allreduce(counts, all, 2, MPI_DOUBLE, MPI_SUM, world);
+  diag_[CANDIDATES] = all[0];
+  diag_[ACTIVE] = all[1];
+
+  if (nrows > nlocal_rows_max_) {
+    nlocal_rows_max_ = nrows;
+    memory->destroy(fix_->array_local);
+    memory->create(fix_->array_local, nlocal_rows_max_, kLocalColumns, "hardcontact:array_local");
+  }
+  fix_->size_local_rows = nrows;
+  int m = 0;
+  for (int c = 0; c < nc; ++c) {
+    if (mu[c] <= 0.0 || !p.counted[c]) continue;
+    const int j = p.body_j[c];
+    double *row = fix_->array_local[m++];
+    row[0] = atom->tag[p.body_i[c]];
+    row[1] = is_wall(j) ? 0 : atom->tag[j];
+    row[2] = mu[c];
+    for (int k = 0; k < 3; ++k) row[3 + k] = p.normal[c][k];
+    row[6] = is_wall(j) ? 1 + wall_index(j) : 0;    // in the order of the fix command, from 1
+  }
+}
+
+// Largest overlap over the rows at positions q + h u (h = 0: at q), in distance units and
+// relative to the contact size. Other listed pairs satisfy eq. 15 (the missed-row check), and
+// D >= linearised gap (D is convex), so they cannot overlap beyond the tolerance either.
+void Outputs::overlap_diagnostics(const ContactProblem &p, const std::vector<Vec3> *u, double h,
+                                  const std::vector<PlaneWall> &walls)
+{
+  double **x = atom->x;
+  double *radius = atom->radius;
+  double worst[2] = {0.0, 0.0};
+  const int nc = p.n_contacts();
+  for (int c = 0; c < nc; ++c) {
+    const int i = p.body_i[c], j = p.body_j[c];
+    Vec3 xi(x[i]);
+    if (h > 0.0) xi += h * (*u)[i];
+    double d;
+    if (!is_wall(j)) {
+      Vec3 xj(x[j]);
+      if (h > 0.0) xj += h * (*u)[j];
+      d = (xj - xi).norm() - radius[i] - radius[j];
+    } else {
+      d = walls[wall_index(j)].gap(xi.data(), radius[i]);
+    }
+    if (d < 0.0) {
+      worst[0] = MAX(worst[0], -d);
+      worst[1] = MAX(worst[1], -d / p.size[c]);
+    }
+  }
+  double all[2];
+  MPI_Allreduce(worst, all, 2, MPI_DOUBLE, MPI_MAX, world);
+  diag_[MAX_OVERLAP] = all[0];
+  diag_[MAX_OVERLAP_RELATIVE] = all[1];
+}
+
+}    // namespace hardcontact

@@ -1,0 +1,61 @@
+// What the fix reports (doc/fix_hardcontact.md, "Restart, fix_modify, output ..."): the global
+// vector f_ID[1..NVECTOR], the per-atom array (contacts, contact force) and the local array
+// (one row per active contact).
+#pragma once
+
+#include "step.h"
+
+#include "../core/plane_wall.h"
+
+#include "pointers.h"
+
+namespace LAMMPS_NS {
+class Fix;
+}
+
+namespace hardcontact {
+
+class Outputs : protected LAMMPS_NS::Pointers {
+ public:
+  // global vector, see compute_vector()
+  enum { ITERATIONS, MAX_OVERLAP, CANDIDATES, ACTIVE, RESIDUAL, MAXITER_HITS,
+         MAX_OVERLAP_RELATIVE, RHO, ROUNDS, CLEARING_WORK, NVECTOR };
+  // per atom: number of active contacts, contact force (3)
+  static constexpr int kPerAtomColumns = 4;
+  // local: atom ID i, atom ID j (0 for a wall), force, normal (3), wall number (0 for a pair)
+  static constexpr int kLocalColumns = 7;
+
+  // fix: its array_atom, array_local and size_local_rows are written here.
+  Outputs(LAMMPS_NS::LAMMPS *lmp, LAMMPS_NS::Fix *fix) : Pointers(lmp), fix_(fix) {}
+  ~Outputs() override;
+  Outputs(const Outputs &) = delete;
+  Outputs &operator=(const Outputs &) = delete;
+
+  double vector(int n) const { return diag_[n]; }
+  double memory_usage() const;
+  void grow_per_atom(int nmax);
+  void clear_per_atom(int i);
+
+  // Setup: the overlaps the run starts from (a warning beyond tol), every other figure 0.
+  void start_of_run(const ContactProblem &p, const std::vector<PlaneWall> &walls, double tol);
+  // After the solve of a step, before the atoms move: all outputs of the step.
+  void record_step(const StepResult &r, const ContactProblem &p, const std::vector<double> &mu,
+                   const std::vector<Vec3> &u, const std::vector<PlaneWall> &walls,
+                   const SolverSettings &settings);
+  void end_of_run(const SolverSettings &settings);
+
+ private:
+  void record_solve(const StepResult &r, const SolverSettings &settings);
+  void overlap_diagnostics(const ContactProblem &p, const std::vector<Vec3> *u, double h,
+                           const std::vector<PlaneWall> &walls);
+  void per_atom_and_local(const ContactProblem &p, const std::vector<double> &mu);
+
+  LAMMPS_NS::Fix *fix_;
+  double diag_[NVECTOR] = {};
+  LAMMPS_NS::bigint maxiter_hits_ = 0;
+  LAMMPS_NS::bigint maxiter_hits_run_ = 0;
+  std::vector<Vec3> force_;    // contact force per owned atom
+  int nlocal_rows_max_ = 0;
+};
+
+}    // namespace hardcontact

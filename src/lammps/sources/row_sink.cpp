@@ -1,0 +1,34 @@
+#include "row_sink.h"
+
+#include "../../core/residual.h"
+
+namespace hardcontact {
+
+void RowSink::begin_candidates(double scale)
+{
+  p_.clear_contacts();
+  scale_ = scale;
+  u_ = nullptr;
+  added_ = 0;
+}
+
+void RowSink::begin_missed(const std::vector<Vec3> &u, double speed_scale, double tol)
+{
+  scale_ = 1.0;    // a candidate of the step is a row already
+  u_ = &u;
+  speed_scale_ = speed_scale;
+  tol_ = tol;
+  added_ = 0;
+}
+
+// Eq. 15 at u, measured like every solved row: the scale the solve just used, so that every
+// row meets one criterion.
+bool RowSink::violated(int i, int j, const Vec3 &n, double d, double size) const
+{
+  const Vec3 du = (is_wall(j) ? Vec3(Vec3::Zero()) : (*u_)[j]) - (*u_)[i];    // u_wall = 0
+  const double g = d + p_.h * n.dot(du);
+  const double scale = row_scale(size, p_.h, speed_scale_, tol_, p_.gap_roundoff);
+  return row_violation(g, 0.0, scale) > tol_;
+}
+
+}    // namespace hardcontact

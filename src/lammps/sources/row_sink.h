@@ -1,0 +1,56 @@
+// The one place that decides which offered (i, j) become rows of the contact problem: the
+// candidate test of Remark 7 and, after a solve, the test for a row the candidates missed.
+// Every source (pairs, walls, ...) feeds it, so both tests are written once.
+#pragma once
+
+#include "contact_source.h"
+
+#include "lmptype.h"
+
+#include <vector>
+
+namespace hardcontact {
+
+class RowSink {
+ public:
+  // tag, nlocal: to count a row shared by two processes on exactly one of them.
+  RowSink(ContactProblem &problem, const LAMMPS_NS::tagint *tag, int nlocal) :
+      p_(problem), tag_(tag), nlocal_(nlocal)
+  {
+  }
+
+  // Candidates: rows whose gap at q^n the free speeds could close within the step,
+  // D <= scale h (|u_i| + |u_j|) (scale 1; scale 0: the overlapping rows, for diagnostics).
+  void begin_candidates(double scale);
+  // Missed rows: after a solve to velocities u with row scales of speed V (residual.h), the
+  // non-candidates violated beyond tol at u (a light sphere struck by a heavy one can move
+  // faster than its free speed). Then u satisfies eq. 15 for every offered row.
+  void begin_missed(const std::vector<Vec3> &u, double speed_scale, double tol);
+
+  void offer(int i, int j, const Vec3 &n, double d, double size)
+  {
+    const bool candidate = d <= scale_ * p_.h * (free_speed(i) + free_speed(j));
+    if (u_ == nullptr ? !candidate : candidate || !violated(i, j, n, d, size)) return;
+    // A pair held by two processes (newton off) is counted by the side of the smaller ID.
+    const bool counted = is_wall(j) || j < nlocal_ || tag_[i] < tag_[j];
+    p_.add_contact(i, j, n, d, size, counted);    // D < 0: see Targets
+    ++added_;
+  }
+  // Rows added since the last begin_*.
+  int added() const { return added_; }
+
+ private:
+  double free_speed(int b) const { return is_wall(b) ? 0.0 : p_.u_free[b].norm(); }
+  bool violated(int i, int j, const Vec3 &n, double d, double size) const;
+
+  ContactProblem &p_;
+  const LAMMPS_NS::tagint *tag_;
+  int nlocal_;
+  double scale_ = 1.0;
+  const std::vector<Vec3> *u_ = nullptr;    // set in the missed-row pass only
+  double speed_scale_ = 0.0;
+  double tol_ = 0.0;
+  int added_ = 0;
+};
+
+}    // namespace hardcontact

@@ -1,0 +1,202 @@
+// At initial_integrate of step n+1, LAMMPS holds q^n (x, ghosts current), u^n (v) and f(q^n)
+// (computed in step n or in setup), and the neighbour list of the last build. This is exactly
+// the data of eq. 14-19, so the whole step happens there: u_free, projection onto K_h(q^n),
+// then q^{n+1} = q^n + h u^{n+1}.
+#include "step.h"
+
+#include "sources/row_sink.h"
+#include "lammps_ops.h"
+#include "targets.h"
+
+#include "../core/residual.h"
+
+#include "atom.h"
+#include "domain.h"
+#include "error.h"
+#include "force.h"
+#include "update.h"
+
+#include <cfloat>
+#include <cmath>
+
+using namespace LAMMPS_NS;
+
+namespace hardcontact {
+namespace {
+const int MAX_ROUNDS = 1000;    // a safety net: each round adds rows, and there are finitely many
+}    // namespace
+
+ContactStep::ContactStep(LAMMPS *lmp, int groupbit, DistributedOps &ops,
+                         const NeighborReach &reach, std::vector<const ContactSource *> sources) :
+    Pointers(lmp), groupbit_(groupbit), ops_(ops), reach_(reach), sources_(std::move(sources))
+{
+}
+
+StepResult ContactStep::solve(Solver &solver, const SolverSettings &settings,
+                              ContactHistory *history)
+{
+  const Bodies bodies = build_bodies(solver.traits().needs_owner_map);
+  RowSink sink(problem_, atom->tag, atom->nlocal);
+  sink.begin_candidates(1.0);
+  offer_rows(bodies, sink);
+  const Targets targets{bodies.recovery_speed, free_speed_scale(problem_, ops_), settings.tol};
+  // Warm start: each row starts from the multiplier its pair had at the last step, if any.
+  if (history) history->load(problem_, atom->tag, mu_);
+  else mu_.assign(problem_.n_contacts(), 0.0);
+
+  StepResult result;
+  int targeted = 0;    // rows before it have their targets
+  for (;;) {
+    targets.apply(problem_, targeted);
+    targeted = problem_.n_contacts();
+    result.report = solver.solve(problem_, settings, ops_, mu_, u_);    // from the mu so far
+    result.iterations += result.report.iterations;
+    ++result.rounds;
+    // An unconverged solve is not refined further: its violations are reported, not chased.
+    if (!result.report.converged) break;
+    sink.begin_missed(u_, result.report.speed_scale, settings.tol);
+    offer_rows(bodies, sink);
+    if (ops_.sum_all(sink.added()) == 0.0) break;
+    if (result.rounds == MAX_ROUNDS) {
+      result.report.converged = false;
+      mu_.resize(problem_.n_contacts(), 0.0);    // the rows of the round not solved
+      break;
+    }
+  }
+  if (history) history->store(problem_, atom->tag, mu_);
+  // The kinetic energy the solve may add (residual.h, energy_within_bound): the work of the
+  // forces clearing overlaps present at q^n, sum mu max(0, -D) over the rows.
+  result.clearing_work = ops_.sum_all(clearing_work(problem_, mu_));
+  return result;
+}
+
+void ContactStep::find_overlaps(const Solver &solver)
+{
+  const Bodies bodies = build_bodies(solver.traits().needs_owner_map);
+  RowSink sink(problem_, atom->tag, atom->nlocal);
+  sink.begin_candidates(0.0);
+  offer_rows(bodies, sink);
+}
+
+void ContactStep::clear()
+{
+  mu_.clear();
+  problem_.clear_contacts();
+}
+
+double ContactStep::memory_usage() const
+{
+  double bytes = (sizeof(int) * 2 + sizeof(double) * 6) * problem_.body_i.capacity();
+  bytes += sizeof(double) * 7 * problem_.inv_mass.capacity();
+  return bytes;
+}
+
+void ContactStep::offer_rows(const Bodies &bodies, RowSink &sink) const
+{
+  for (const ContactSource *source : sources_) source->visit(bodies, sink);
+}
+
+// Radius and mass must be usable, and no value may be NaN or infinite: a NaN would spread to
+// every body through the solve.
+void ContactStep::check_bodies(const std::vector<PlaneWall> &walls) const
+{
+  double **x = atom->x, **v = atom->v;
+  double *radius = atom->radius, *rmass = atom->rmass;
+  int *mask = atom->mask;
+  tagint bad[3] = {0, 0, 0};    // non-finite, non-positive radius/mass, behind a wall
+  for (int i = 0; i < atom->nlocal; ++i) {
+    if (!(mask[i] & groupbit_)) continue;
+    bool finite = std::isfinite(radius[i]) && std::isfinite(rmass[i]);
+    for (int k = 0; k < 3; ++k) finite = finite && std::isfinite(x[i][k]) && std::isfinite(v[i][k]);
+    if (!finite && !bad[0]) bad[0] = atom->tag[i];
+    if ((radius[i] <= 0.0 || rmass[i] <= 0.0) && !bad[1]) bad[1] = atom->tag[i];
+    for (const auto &w : walls)
+      if (w.gap(x[i], radius[i]) < -radius[i] && !bad[2]) bad[2] = atom->tag[i];
+  }
+  tagint all[3];
+  MPI_Allreduce(bad, all, 3, MPI_LMP_TAGINT, MPI_MAX, world);
+  if (all[0])
+    error->all(FLERR, "Fix hardcontact: atom {} has a non-finite position, velocity, radius or "
+                      "mass: fix the data file or the commands that set it", all[0]);
+  if (all[1])
+    error->all(FLERR, "Fix hardcontact: atom {} has radius or mass <= 0: every atom of the "
+                      "group needs a positive diameter and density (set diameter / set density)",
+               all[1]);
+  if (all[2])
+    error->all(FLERR, "Fix hardcontact: the centre of atom {} is behind a wall: move the wall "
+                      "or the atom", all[2]);
+}
+
+// Eq. 14: u_free = u^n + h M^-1 f^{n+1}, f evaluated at q^n (LAMMPS's forces of this state).
+// Atoms outside the group are obstacles: contacts do not change their velocity (inv_mass 0).
+Bodies ContactStep::build_bodies(bool needs_owner_map)
+{
+  const int nlocal = atom->nlocal;
+  const int nall = nlocal + atom->nghost;
+  double **v = atom->v, **f = atom->f;
+  double *rmass = atom->rmass;
+  int *mask = atom->mask;
+  const double dtfm = update->dt * force->ftm2v;
+
+  problem_.h = update->dt;
+  problem_.n_owned = nlocal;
+  problem_.inv_mass.resize(nall);
+  problem_.u_free.resize(nall);
+  for (int i = 0; i < nall; ++i)
+    problem_.inv_mass[i] = (mask[i] & groupbit_) ? force->ftm2v / rmass[i] : 0.0;
+
+  tagint bad = 0;
+  double local[2] = {0.0, 0.0};    // largest velocity change from the forces, largest radius
+  for (int i = 0; i < nlocal; ++i) {
+    Vec3 u(v[i]);
+    if (mask[i] & groupbit_) {
+      const Vec3 kick = (dtfm / rmass[i]) * Vec3(f[i]);
+      u += kick;
+      local[0] = MAX(local[0], kick.norm());
+      local[1] = MAX(local[1], atom->radius[i]);
+    }
+    if (!u.allFinite() && !bad) bad = atom->tag[i];
+    problem_.u_free[i] = u;
+  }
+  tagint bad_all;
+  MPI_Allreduce(&bad, &bad_all, 1, MPI_LMP_TAGINT, MPI_MAX, world);
+  if (bad_all)
+    error->all(FLERR, "Fix hardcontact: atom {} has a non-finite velocity or force at step {}: "
+                      "check the forces acting on it", bad_all, update->ntimestep);
+  double global[2];
+  MPI_Allreduce(local, global, 2, MPI_DOUBLE, MPI_MAX, world);
+  reach_.check_radius(global[1]);
+  ops_.forward(problem_.u_free.data()->data(), kDoublesPerVec3);
+
+  // The owners' coordinates on the ghosts, unshifted: a pair across a periodic boundary is
+  // then measured as (x_j - x_i) + k L on both processes holding it (PairSource).
+  x_owner_.resize(nall);
+  for (int i = 0; i < nlocal; ++i) x_owner_[i] = Vec3(atom->x[i]);
+  ops_.forward(x_owner_.data()->data(), kDoublesPerVec3);
+
+  // Round-off of a predicted gap: coordinates of size X carry errors of eps X, and h u of
+  // eps h |u|. The solvers never ask for less (core/residual.h).
+  double extent = 0.0;
+  for (int d = 0; d < 3; ++d)
+    extent = MAX(extent, MAX(fabs(domain->boxlo[d]), fabs(domain->boxhi[d])));
+  double speed = 0.0;
+  for (int i = 0; i < nlocal; ++i) speed = MAX(speed, problem_.u_free[i].norm());
+  double speed_all;
+  MPI_Allreduce(&speed, &speed_all, 1, MPI_DOUBLE, MPI_MAX, world);
+  problem_.gap_roundoff = 16.0 * DBL_EPSILON * (extent + problem_.h * speed_all);
+
+  // The exact solver assembles the operator: on one process, ghosts are periodic images.
+  problem_.owner.clear();
+  if (needs_owner_map) {
+    owner_index_.clear();
+    for (int i = 0; i < nlocal; ++i) owner_index_[atom->tag[i]] = i;
+    problem_.owner.resize(nall);
+    for (int i = 0; i < nall; ++i) {
+      const auto it = owner_index_.find(atom->tag[i]);
+      problem_.owner[i] = it == owner_index_.end() ? -1 : it->second;
+    }
+  }
+  return {problem_.u_free, x_owner_, global[0]};
+}
+
+}    // namespace hardcontact

@@ -1,0 +1,66 @@
+// One step of scheme (S) inside LAMMPS's Verlet loop, as one visible sequence:
+//   bodies (eq. 14) -> sources (candidate rows, Remark 7) -> targets -> solve rounds
+// (each followed by the missed-row check) -> u^{n+1}; the fix then writes outputs and moves
+// the atoms (integrate.h). What one stage finds is handed to the next as a value (Bodies,
+// Targets, StepResult), never left in a member for a later call to find.
+// The vectors here are workspace, kept across steps so that a step allocates nothing.
+#pragma once
+
+#include "contact_history.h"
+#include "neighbor_reach.h"
+#include "sources/contact_source.h"
+
+#include "../core/plane_wall.h"
+#include "../core/solver.h"
+
+#include "pointers.h"
+
+#include <unordered_map>
+#include <vector>
+
+namespace hardcontact {
+
+struct StepResult {
+  SolveReport report;           // of the last solve round
+  int iterations = 0;           // over all rounds
+  int rounds = 0;
+  double clearing_work = 0.0;   // over all processes (residual.h, clearing_work)
+};
+
+class ContactStep : protected LAMMPS_NS::Pointers {
+ public:
+  ContactStep(LAMMPS_NS::LAMMPS *lmp, int groupbit, DistributedOps &ops,
+              const NeighborReach &reach, std::vector<const ContactSource *> sources);
+
+  // u^{n+1} from the state at q^n; history (nullptr: no warm start) gives the start values
+  // and keeps the result.
+  StepResult solve(Solver &solver, const SolverSettings &settings, ContactHistory *history);
+  // Setup: stops with one collective error naming the first atom with a non-finite or
+  // non-positive value, or with its centre behind a wall.
+  void check_bodies(const std::vector<PlaneWall> &walls) const;
+  // Step 0 (setup): only the rows overlapping at q^n, for the diagnostics the run starts from.
+  void find_overlaps(const Solver &solver);
+  void clear();
+  double memory_usage() const;
+
+  const ContactProblem &problem() const { return problem_; }
+  const std::vector<double> &mu() const { return mu_; }
+  const std::vector<Vec3> &u() const { return u_; }
+
+ private:
+  Bodies build_bodies(bool needs_owner_map);
+  void offer_rows(const Bodies &bodies, class RowSink &sink) const;
+
+  int groupbit_;
+  DistributedOps &ops_;
+  const NeighborReach &reach_;
+  std::vector<const ContactSource *> sources_;
+
+  ContactProblem problem_;
+  std::vector<double> mu_;
+  std::vector<Vec3> u_;
+  std::vector<Vec3> x_owner_;
+  std::unordered_map<LAMMPS_NS::tagint, int> owner_index_;
+};
+
+}    // namespace hardcontact

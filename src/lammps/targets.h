@@ -1,0 +1,21 @@
+// Target terms: what changes only the affine part each row must reach (the gap D of eq. 15),
+// not the set the multipliers may take. Applied in one place, to the rows of each solve round
+// before it is solved: the overlap policy today; a wall's velocity (+ h n . u_wall) and
+// restitution go here too (clamp geometric overlaps first, then add velocity terms).
+// Host-free: it could live in src/core.
+#pragma once
+
+#include "../core/contact_problem.h"
+
+namespace hardcontact {
+
+struct Targets {
+  double recovery_speed;    // largest |h f / m| of the step (Bodies)
+  double speed_scale;       // V of the candidate rows (core/residual.h)
+  double tol;               // the solver tolerance
+
+  // Rows first_row.. of p, added since the last call.
+  void apply(ContactProblem &p, int first_row) const;
+};
+
+}    // namespace hardcontact
