@@ -13,15 +13,6 @@ void DualOperator::free_velocities(std::vector<Vec3> &u) const
   forward(u);
 }
 
-void DualOperator::apply(int c, double dmu, std::vector<Vec3> &u) const
-{
-  const ContactProblem &p = *p_;
-  const Vec3 impulse = (p.h * dmu) * p.normal[c];
-  const int i = p.body_i[c], j = p.body_j[c];
-  if (i < p.n_owned) u[i] -= p.inv_mass[i] * impulse;
-  if (j >= 0 && j < p.n_owned) u[j] += p.inv_mass[j] * impulse;
-}
-
 void DualOperator::velocities(const std::vector<int> &rows, const std::vector<double> &mu,
                               std::vector<Vec3> &u) const
 {
@@ -42,13 +33,6 @@ void DualOperator::velocities(const std::vector<double> &mu, std::vector<Vec3> &
   forward(u);
 }
 
-double DualOperator::diagonal(int c) const
-{
-  const ContactProblem &p = *p_;
-  const int j = p.body_j[c];
-  return p.h * p.h * (p.inv_mass[p.body_i[c]] + (j >= 0 ? p.inv_mass[j] : 0.0));
-}
-
 void DualOperator::count_degrees(const std::vector<int> &rows)
 {
   const ContactProblem &p = *p_;
@@ -59,15 +43,6 @@ void DualOperator::count_degrees(const std::vector<int> &rows)
     if (j >= 0 && j < p.n_owned) deg_[j] += 1.0;
   }
   ops_->forward(deg_.data(), 1);
-}
-
-double DualOperator::gershgorin_row(int c) const
-{
-  const ContactProblem &p = *p_;
-  const int i = p.body_i[c], j = p.body_j[c];
-  double row = p.inv_mass[i] * deg_[i];
-  if (j >= 0) row += p.inv_mass[j] * deg_[j];
-  return p.h * p.h * row;
 }
 
 double DualOperator::bound(const std::vector<int> &rows)

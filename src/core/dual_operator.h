@@ -39,16 +39,35 @@ class DualOperator {
   // g_c(u) = D_c + h G_c u, eq. 15: also the gradient of the dual objective at mu(u).
   double gap(int c, const std::vector<Vec3> &u) const { return p_->predicted_gap(c, u); }
   // Adds the velocity change of an impulse h dmu G_c to the owned bodies of row c.
-  void apply(int c, double dmu, std::vector<Vec3> &u) const;
+  void apply(int c, double dmu, std::vector<Vec3> &u) const
+  {
+    const ContactProblem &p = *p_;
+    const Vec3 impulse = (p.h * dmu) * p.normal[c];
+    const int i = p.body_i[c], j = p.body_j[c];
+    if (i < p.n_owned) u[i] -= p.inv_mass[i] * impulse;
+    if (j >= 0 && j < p.n_owned) u[j] += p.inv_mass[j] * impulse;
+  }
 
   // A_cc = h^2 (w_i + w_j): the exact step along one row (Gauss-Seidel).
-  double diagonal(int c) const;
+  double diagonal(int c) const
+  {
+    const ContactProblem &p = *p_;
+    const int j = p.body_j[c];
+    return p.h * p.h * (p.inv_mass[p.body_i[c]] + (is_wall(j) ? 0.0 : p.inv_mass[j]));
+  }
   // Gershgorin: the off-diagonal entries of row c are h^2 w_k n_c.n_d for rows d sharing body
   // k, so |A_cc| + sum |A_cd| <= h^2 (w_i deg_i + w_j deg_j) with deg_k the rows touching k.
   // count_degrees() over the listed rows first (owners count, ghosts receive: an owner holds
   // every row of its own bodies).
   void count_degrees(const std::vector<int> &rows);
-  double gershgorin_row(int c) const;
+  double gershgorin_row(int c) const
+  {
+    const ContactProblem &p = *p_;
+    const int i = p.body_i[c], j = p.body_j[c];
+    double row = p.inv_mass[i] * deg_[i];
+    if (!is_wall(j)) row += p.inv_mass[j] * deg_[j];
+    return p.h * p.h * row;
+  }
   // L >= largest eigenvalue of A restricted to the listed rows, over all processes (Remark 8
   // for any radii and masses: 2 kappa h^2 / m with equal masses and kappa rows per body).
   // 0 when there is no row. Counts degrees.

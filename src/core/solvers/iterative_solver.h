@@ -52,11 +52,20 @@ class IterativeSolver : public Solver {
   using Verdict = typename WorkingSet<Law>::Verdict;
 
   // Once per solve, after the working set is made: u = u(mu), and the solver's own state.
-  virtual void start(const SolverSettings &s, std::vector<double> &mu, std::vector<Vec3> &u) = 0;
+  virtual void start(const SolverSettings &s, std::vector<double> &mu, std::vector<Vec3> &u)
+  {
+    op_.velocities(set_.rows(), mu, u);
+    rows_changed(s);
+  }
   // One iteration from (mu, u = u(mu)) to the next; false if the method broke down.
   virtual bool step(const SolverSettings &s, std::vector<double> &mu, std::vector<Vec3> &u) = 0;
   // Rows joined the working set (at mu = 0; u unchanged).
-  virtual void grown(const SolverSettings &s, std::vector<double> &mu, std::vector<Vec3> &u) = 0;
+  virtual void grown(const SolverSettings &s, std::vector<double> &, std::vector<Vec3> &)
+  {
+    rows_changed(s);
+  }
+  // The working set is new or larger: what depends on its rows (step bounds) is out of date.
+  virtual void rows_changed(const SolverSettings &) {}
   // This process's largest violation over the working set at (mu, u); by default from the
   // gaps of u, which it leaves in g_ for the next step.
   virtual double set_residual(const std::vector<double> &mu, const std::vector<Vec3> &u)

@@ -3,19 +3,6 @@
 namespace hardcontact {
 
 template <class Law>
-void PgsSolver<Law>::start(const SolverSettings &, std::vector<double> &mu, std::vector<Vec3> &u)
-{
-  this->op_.velocities(this->set_.rows(), mu, u);
-  this->op_.count_degrees(this->set_.rows());    // for the Gershgorin step of boundary rows
-}
-
-template <class Law>
-void PgsSolver<Law>::grown(const SolverSettings &, std::vector<double> &, std::vector<Vec3> &)
-{
-  this->op_.count_degrees(this->set_.rows());
-}
-
-template <class Law>
 bool PgsSolver<Law>::step(const SolverSettings &, std::vector<double> &mu, std::vector<Vec3> &u)
 {
   const DualOperator &op = this->op_;

@@ -18,9 +18,9 @@ namespace hardcontact {
 template <class Law>
 class PgsSolver : public IterativeSolver<Law> {
  protected:
-  void start(const SolverSettings &s, std::vector<double> &mu, std::vector<Vec3> &u) override;
+  // row degrees for the Gershgorin step of the boundary rows
+  void rows_changed(const SolverSettings &) override { this->op_.count_degrees(this->set_.rows()); }
   bool step(const SolverSettings &s, std::vector<double> &mu, std::vector<Vec3> &u) override;
-  void grown(const SolverSettings &s, std::vector<double> &mu, std::vector<Vec3> &u) override;
 
  private:
   std::vector<double> dmu_;    // boundary-row steps of one sweep, kept between solves

@@ -10,12 +10,9 @@ namespace hardcontact {
 template <class Law>
 class UzawaSolver : public IterativeSolver<Law> {
  protected:
-  void start(const SolverSettings &s, std::vector<double> &mu, std::vector<Vec3> &u) override;
+  // rho from the Gershgorin bound of the working set (or the user's)
+  void rows_changed(const SolverSettings &s) override;
   bool step(const SolverSettings &s, std::vector<double> &mu, std::vector<Vec3> &u) override;
-  void grown(const SolverSettings &s, std::vector<double> &mu, std::vector<Vec3> &u) override;
-
- private:
-  double choose_rho(const SolverSettings &s);
 };
 
 using Uzawa = UzawaSolver<NormalLaw>;
