@@ -20,8 +20,8 @@ namespace {
 hardcontact::FixOptions checked_options(LAMMPS *lmp, int narg, char **arg)
 {
   if (!lmp->atom->radius_flag || !lmp->atom->rmass_flag)
-    lmp->error->all(FLERR,
-               "Fix hardcontact requires atom attributes radius and rmass: use atom_style sphere");
+    lmp->error->all(
+        FLERR, "Fix hardcontact requires atom attributes radius and rmass: use atom_style sphere");
   if (!lmp->atom->tag_enable)
     lmp->error->all(FLERR, "Fix hardcontact requires atom IDs: remove 'atom_modify id no'");
   return hardcontact::parse_keywords(lmp, narg, arg, 3);
@@ -166,7 +166,8 @@ void FixHardContact::grow_arrays(int nmax)
 
 void FixHardContact::copy_arrays(int i, int j, int)
 {
-  for (int k = 0; k < hardcontact::Outputs::kPerAtomColumns; ++k) array_atom[j][k] = array_atom[i][k];
+  const int n = hardcontact::Outputs::kPerAtomColumns;
+  for (int k = 0; k < n; ++k) array_atom[j][k] = array_atom[i][k];
   history_.copy(i, j);
 }
 

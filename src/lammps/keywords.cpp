@@ -125,7 +125,8 @@ std::string keyword_list()
 {
   std::string s;
   const int n = static_cast<int>(sizeof(keywords) / sizeof(keywords[0]));
-  for (int k = 0; k < n; ++k) s += (k == 0 ? "" : k + 1 < n ? ", " : " or ") + std::string(keywords[k].name);
+  for (int k = 0; k < n; ++k)
+    s += (k == 0 ? "" : k + 1 < n ? ", " : " or ") + std::string(keywords[k].name);
   return s;
 }
 

@@ -50,8 +50,8 @@ void Outputs::start_of_run(const ContactProblem &p, const std::vector<PlaneWall>
   if (diag_[MAX_OVERLAP_RELATIVE] > tol && comm->me == 0)
     error->warning(FLERR, "Fix hardcontact: the run starts with overlapping spheres (largest "
                           "overlap {:.6g}, {:.3g} of the contact size); each step clears at most "
-                          "h x the velocity the forces give in one step, plus 2 tol x its row scale, so "
-                          "that no energy explodes (see the doc page)",
+                          "h x the velocity the forces give in one step, plus 2 tol x its row "
+                          "scale, so that no energy explodes (see the doc page)",
                    diag_[MAX_OVERLAP], diag_[MAX_OVERLAP_RELATIVE]);
   fix_->size_local_rows = 0;
   for (int i = 0; i < atom->nlocal; ++i) clear_per_atom(i);

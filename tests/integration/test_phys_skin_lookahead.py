@@ -10,7 +10,7 @@ completes and the sphere rests on the floor. What happens: at step 20 the fix st
 The largest move in one step was 0.109659: use 'neighbor 0.439 bin' (4 x that)" - advice
 smaller than the skin in use.
 
-Cause (src/lammps/fix_hardcontact_step.cpp, move_and_check): after the move of step n it
+Cause (src/lammps/integrate.cpp, Integrate::move): after the move of step n it
 forces a rebuild when disp + h |u^n| > skin/2, i.e. it assumes the next move equals this
 one. Under a force (or after a contact impulse that speeds an atom up) the next move is
 h |u^{n+1}| > h |u^n|: here at step 19 disp + h|u^19| = 0.498692 < 0.5 (no rebuild) and at

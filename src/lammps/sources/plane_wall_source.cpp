@@ -36,8 +36,10 @@ void PlaneWallSource::check_in_box() const
       error->all(FLERR, "Fix hardcontact wall {} needs a non-periodic boundary in that "
                         "direction: change the boundary command", names[w.dim]);
     // A shrink-wrapped box follows the atoms: only fixed boundaries bound the wall.
-    const bool fixed_lo = domain->boundary[w.dim][0] == 1, fixed_hi = domain->boundary[w.dim][1] == 1;
-    if ((fixed_lo && w.coord < domain->boxlo[w.dim]) || (fixed_hi && w.coord > domain->boxhi[w.dim]))
+    const bool fixed_lo = domain->boundary[w.dim][0] == 1;
+    const bool fixed_hi = domain->boundary[w.dim][1] == 1;
+    if ((fixed_lo && w.coord < domain->boxlo[w.dim]) ||
+        (fixed_hi && w.coord > domain->boxhi[w.dim]))
       error->all(FLERR, "Fix hardcontact wall {} at {} lies outside the box ({} to {}): move "
                         "it inside", names[w.dim], w.coord, domain->boxlo[w.dim],
                  domain->boxhi[w.dim]);
