@@ -2,7 +2,7 @@
 
 #include "sources/contact_source.h"
 
-#include "../core/velocity_update.h"
+#include "../core/dual_operator.h"
 
 #include "atom.h"
 #include "comm.h"

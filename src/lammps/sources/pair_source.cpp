@@ -14,7 +14,7 @@ using namespace LAMMPS_NS;
 namespace hardcontact {
 
 // The list holds each pair with an owned atom first; a pair across processes is held by both,
-// each side pushing only its own atom (core/velocity_update.h).
+// each side pushing only its own atom (core/dual_operator.h).
 void PairSource::visit(const Bodies &bodies, RowSink &sink) const
 {
   Atom *atom = lmp_->atom;
