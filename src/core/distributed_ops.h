@@ -5,10 +5,14 @@
 
 namespace hardcontact {
 
+// The widest value the core forwards per body: one velocity (3 doubles; contact degrees are
+// one). A host sizes its communication buffers with it.
+constexpr int kMaxForwardPerBody = 3;
+
 class DistributedOps {
  public:
   virtual ~DistributedOps() = default;
-  // Copy `per_body` doubles per owned body to every ghost copy of that body.
+  // Copy `per_body` (<= kMaxForwardPerBody) doubles per owned body to every ghost copy.
   virtual void forward(double *data, int per_body) = 0;
   virtual double max_all(double local) = 0;
   virtual double sum_all(double local) = 0;

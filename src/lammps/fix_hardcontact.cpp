@@ -11,6 +11,8 @@
 #include "update.h"
 #include "utils.h"
 
+#include "../core/laws/normal.h"
+
 using namespace LAMMPS_NS;
 using namespace FixConst;
 
@@ -27,7 +29,7 @@ hardcontact::FixOptions checked_options(LAMMPS *lmp, int narg, char **arg)
   return hardcontact::parse_keywords(lmp, narg, arg, 3);
 }
 
-const int HISTORY_VALUES = 1;    // per contact: the normal force (the law's block size)
+const int HISTORY_VALUES = hardcontact::NormalLaw::block;    // per contact: the law's multipliers
 
 }    // namespace
 

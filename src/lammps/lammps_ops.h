@@ -16,9 +16,10 @@ constexpr int kDoublesPerVec3 = static_cast<int>(sizeof(Vec3) / sizeof(double));
 
 class LammpsOps : public DistributedOps {
  public:
-  // The widest value forwarded per body: one Vec3 (u_free and the owners' coordinates in the
-  // step, u in the solvers; the solvers' contact degrees are one double). Sizes comm_forward.
-  static constexpr int kMaxPerBody = kDoublesPerVec3;
+  // The widest value forwarded per body: the core's (u in the solvers, degrees) and the
+  // step's own (u_free and the owners' coordinates, one Vec3 each). Sizes comm_forward.
+  static constexpr int kMaxPerBody =
+      kMaxForwardPerBody > kDoublesPerVec3 ? kMaxForwardPerBody : kDoublesPerVec3;
 
   void attach(LAMMPS_NS::Fix *fix, LAMMPS_NS::Comm *comm, LAMMPS_NS::Error *error,
               MPI_Comm world)

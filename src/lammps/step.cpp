@@ -6,7 +6,7 @@
 
 #include "sources/row_sink.h"
 #include "lammps_ops.h"
-#include "targets.h"
+#include "../core/targets.h"
 
 #include "../core/residual.h"
 

@@ -2,10 +2,9 @@
 // not the set the multipliers may take. Applied in one place, to the rows of each solve round
 // before it is solved: the overlap policy today; a wall's velocity (+ h n . u_wall) and
 // restitution go here too (clamp geometric overlaps first, then add velocity terms).
-// Host-free: it could live in src/core.
 #pragma once
 
-#include "../core/contact_problem.h"
+#include "contact_problem.h"
 
 namespace hardcontact {
 
