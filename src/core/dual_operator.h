@@ -29,6 +29,19 @@ class DualOperator {
   // side applies its own half exactly once.
   void velocities(const std::vector<int> &rows, const std::vector<double> &mu,
                   std::vector<Vec3> &u) const;
+  // The same with each row's multiplier computed as the row is applied (mu_of(c) -> mu_c): a
+  // solver's update of mu fused into the one pass over the rows.
+  template <class MuOf>
+  void velocities_with(const std::vector<int> &rows, MuOf &&mu_of, std::vector<Vec3> &u) const
+  {
+    u.resize(p_->n_bodies());
+    for (int b = 0; b < p_->n_owned; ++b) u[b] = p_->u_free[b];
+    for (const int c : rows) {
+      const double m = mu_of(c);
+      if (m != 0.0) apply(c, m, u);
+    }
+    forward(u);
+  }
   // The same over every row.
   void velocities(const std::vector<double> &mu, std::vector<Vec3> &u) const;
   // u = u_free (mu = 0).

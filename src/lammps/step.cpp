@@ -36,7 +36,7 @@ StepResult ContactStep::solve(Solver &solver, const SolverSettings &settings,
                               ContactHistory *history)
 {
   const Bodies bodies = build_bodies(solver.traits().needs_owner_map);
-  RowSink sink(problem_, atom->tag, atom->nlocal);
+  RowSink sink(problem_, atom->tag, atom->nlocal, free_speed_);
   sink.begin_candidates(1.0);
   offer_rows(bodies, sink);
   const Targets targets{bodies.recovery_speed, free_speed_scale(problem_, ops_), settings.tol};
@@ -73,7 +73,7 @@ StepResult ContactStep::solve(Solver &solver, const SolverSettings &settings,
 void ContactStep::find_overlaps(const Solver &solver)
 {
   const Bodies bodies = build_bodies(solver.traits().needs_owner_map);
-  RowSink sink(problem_, atom->tag, atom->nlocal);
+  RowSink sink(problem_, atom->tag, atom->nlocal, free_speed_);
   sink.begin_candidates(0.0);
   offer_rows(bodies, sink);
 }

@@ -60,6 +60,7 @@ class ContactStep : protected LAMMPS_NS::Pointers {
   std::vector<double> mu_;
   std::vector<Vec3> u_;
   std::vector<Vec3> x_owner_;
+  std::vector<double> free_speed_;    // RowSink's |u_free| per body
   std::unordered_map<LAMMPS_NS::tagint, int> owner_index_;
 };
 

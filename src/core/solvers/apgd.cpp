@@ -41,12 +41,18 @@ void ApgdSolver<Law>::start(const SolverSettings &s, std::vector<double> &mu,
   L_ = s.rho > 0.0 ? 1.0 / s.rho : 0.25 * this->op_.bound(this->set_.rows());
   restart(mu);
   this->rho_ = L_ > 0.0 ? 1.0 / L_ : 0.0;
+  residual_ready_ = false;
 }
 
-// g(mu) is maintained by the iteration: no product needed for the residual.
+// g(mu) is maintained by the iteration: no product needed for the residual, and after a step
+// it was taken in the step's last pass.
 template <class Law>
 double ApgdSolver<Law>::set_residual(const std::vector<double> &mu, const std::vector<Vec3> &)
 {
+  if (residual_ready_) {
+    residual_ready_ = false;
+    return residual_;
+  }
   double r = 0.0;
   for (const int c : this->set_.rows()) r = std::max(r, this->set_.violation(c, this->g_[c], mu[c]));
   return r;
@@ -62,8 +68,12 @@ void ApgdSolver<Law>::grown(const SolverSettings &, std::vector<double> &mu, std
   for (const int c : this->set_.rows()) this->g_[c] = this->op_.gap(c, u);    // u = u(mu)
   gaps(y_, gy_, u);
   this->op_.velocities(this->set_.rows(), mu, u);
+  residual_ready_ = false;    // the set is larger
 }
 
+// Three passes over the rows per iteration: the trial point fused with its velocities (eq. 16),
+// its gaps fused with the sums of the backtracking test, and the update fused with the
+// residual of the next verdict.
 template <class Law>
 bool ApgdSolver<Law>::step(const SolverSettings &, std::vector<double> &mu, std::vector<Vec3> &u)
 {
@@ -75,11 +85,12 @@ bool ApgdSolver<Law>::step(const SolverSettings &, std::vector<double> &mu, std:
   // phi at the trial point (this is what makes 1/L a valid step without knowing ||A||).
   double sums[5];
   for (;;) {
-    for (const int c : rows) next_[c] = Law::project(y_[c] - gy_[c] / L_);
-    gaps(next_, gnext_, u);
+    this->op_.velocities_with(
+        rows, [&](int c) { return next_[c] = Law::project(y_[c] - gy_[c] / L_); }, u);
     // phi(y), phi(next), gy.(next - y), |next - y|^2, gy.(next - mu) - each row counted once
     for (double &v : sums) v = 0.0;
     for (const int c : rows) {
+      gnext_[c] = this->op_.gap(c, u);
       if (!p.counted[c]) continue;
       const double d = next_[c] - y_[c];
       sums[0] += 0.5 * y_[c] * (gy_[c] + b_[c]);
@@ -99,6 +110,7 @@ bool ApgdSolver<Law>::step(const SolverSettings &, std::vector<double> &mu, std:
   if (!(L_ < 1e300)) {    // the estimate broke down: report the iterate, unconverged
     this->op_.velocities(rows, mu, u);
     this->rho_ = 1.0 / L_;
+    residual_ready_ = false;
     return false;
   }
 
@@ -109,12 +121,16 @@ bool ApgdSolver<Law>::step(const SolverSettings &, std::vector<double> &mu, std:
     theta_next = 1.0;
     beta = 0.0;
   }
+  double r = 0.0;
   for (const int c : rows) {
     y_[c] = next_[c] + beta * (next_[c] - mu[c]);
     gy_[c] = gnext_[c] + beta * (gnext_[c] - g[c]);
     mu[c] = next_[c];
     g[c] = gnext_[c];
+    r = std::max(r, this->set_.violation(c, g[c], mu[c]));
   }
+  residual_ = r;
+  residual_ready_ = true;
   theta_ = theta_next;
   L_ *= 0.9;    // let the estimate come back down where the problem is softer
   this->rho_ = 1.0 / L_;

@@ -24,6 +24,8 @@ class ApgdSolver : public IterativeSolver<Law> {
 
   double L_ = 0.0;        // Lipschitz estimate of grad phi
   double theta_ = 1.0;    // Nesterov's sequence
+  double residual_ = 0.0;          // the set's residual at the iterate, from step()'s last pass
+  bool residual_ready_ = false;
   // per row, kept between solves: no allocation per step (g(mu) is the base's g_)
   std::vector<double> b_;       // g at mu = 0: the linear term of the dual
   std::vector<double> y_;       // extrapolated point

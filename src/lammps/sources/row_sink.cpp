@@ -7,6 +7,10 @@ namespace hardcontact {
 void RowSink::begin_candidates(double scale)
 {
   p_.clear_contacts();
+  // once per body, not once per offer (each pass offers every pair and wall)
+  const int nb = p_.n_bodies();
+  speed_.resize(nb);
+  for (int b = 0; b < nb; ++b) speed_[b] = p_.u_free[b].norm();
   scale_ = scale;
   u_ = nullptr;
   added_ = 0;

@@ -13,9 +13,11 @@ namespace hardcontact {
 
 class RowSink {
  public:
-  // tag, nlocal: to count a row shared by two processes on exactly one of them.
-  RowSink(ContactProblem &problem, const LAMMPS_NS::tagint *tag, int nlocal) :
-      p_(problem), tag_(tag), nlocal_(nlocal)
+  // tag, nlocal: to count a row shared by two processes on exactly one of them. speed: the
+  // caller's workspace for |u_free| per body (kept between steps: no allocation per step).
+  RowSink(ContactProblem &problem, const LAMMPS_NS::tagint *tag, int nlocal,
+          std::vector<double> &speed) :
+      p_(problem), tag_(tag), nlocal_(nlocal), speed_(speed)
   {
   }
 
@@ -40,12 +42,13 @@ class RowSink {
   int added() const { return added_; }
 
  private:
-  double free_speed(int b) const { return is_wall(b) ? 0.0 : p_.u_free[b].norm(); }
+  double free_speed(int b) const { return is_wall(b) ? 0.0 : speed_[b]; }
   bool violated(int i, int j, const Vec3 &n, double d, double size) const;
 
   ContactProblem &p_;
   const LAMMPS_NS::tagint *tag_;
   int nlocal_;
+  std::vector<double> &speed_;    // |u_free| per body, from begin_candidates
   double scale_ = 1.0;
   const std::vector<Vec3> *u_ = nullptr;    // set in the missed-row pass only
   double speed_scale_ = 0.0;
