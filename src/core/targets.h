@@ -13,6 +13,13 @@ struct Targets {
   double speed_scale;       // V of the candidate rows (core/residual.h)
   double tol;               // the solver tolerance
 
+  // Restitution (Newton's law at velocity level), off while u_start is null: u^n per body
+  // (ghosts included), the coefficient e of each row, and the approach speed below which
+  // contacts stay inelastic.
+  const std::vector<Vec3> *u_start = nullptr;
+  const std::vector<double> *restitution = nullptr;
+  double bounce_vmin = 0.0;
+
   // Rows first_row.. of p, added since the last call.
   void apply(ContactProblem &p, int first_row) const;
 };

@@ -129,7 +129,8 @@ void FixHardContact::setup(int)
 void FixHardContact::initial_integrate(int)
 {
   const hardcontact::StepResult result =
-      step_.solve(*solver_, options_.settings, options_.warmstart ? &history_ : nullptr);
+      step_.solve(*solver_, options_.settings, options_.warmstart ? &history_ : nullptr,
+                  options_.restitution, options_.bounce_vmin);
   if (options_.warmstart) history_resized();
   outputs_.record_step(result, step_.problem(), step_.mu(), step_.u(), walls_.walls(),
                        options_.settings);

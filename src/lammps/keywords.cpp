@@ -1,5 +1,6 @@
 #include "keywords.h"
 
+#include "atom.h"
 #include "domain.h"
 #include "error.h"
 #include "lammps.h"
@@ -14,12 +15,14 @@ using namespace LAMMPS_NS;
 namespace hardcontact {
 namespace {
 
-// A parser reads the values of its keyword (values[0..nvalues-1]) into the options.
-using Parser = void (*)(LAMMPS *lmp, char **values, FixOptions &options);
+// A parser reads the values of its keyword (values[0..n-1]) into the options; n is nvalues,
+// or nvalues + optional when the words after them are values rather than the next keyword.
+using Parser = void (*)(LAMMPS *lmp, char **values, int n, FixOptions &options);
 
 struct Keyword {
   const char *name;
   int nvalues;
+  int optional;    // values that may follow (e.g. type ranges I J), all or none
   Parser parse;
   const char *doc;
 };
@@ -42,7 +45,7 @@ std::string joined(const std::vector<std::string> &names)
   return s;
 }
 
-void parse_solver(LAMMPS *lmp, char **values, FixOptions &o)
+void parse_solver(LAMMPS *lmp, char **values, int, FixOptions &o)
 {
   o.solver_name = values[0];
   if (!make_solver(o.solver_name))
@@ -50,7 +53,7 @@ void parse_solver(LAMMPS *lmp, char **values, FixOptions &o)
                     joined(solver_names()));
 }
 
-void parse_tol(LAMMPS *lmp, char **values, FixOptions &o)
+void parse_tol(LAMMPS *lmp, char **values, int, FixOptions &o)
 {
   o.settings.tol = number(lmp, "tol", values[0]);
   if (o.settings.tol <= 0.0 || o.settings.tol >= 1.0)
@@ -58,7 +61,7 @@ void parse_tol(LAMMPS *lmp, char **values, FixOptions &o)
                            "contact size), got {}", values[0]);
 }
 
-void parse_maxiter(LAMMPS *lmp, char **values, FixOptions &o)
+void parse_maxiter(LAMMPS *lmp, char **values, int, FixOptions &o)
 {
   if (!utils::is_integer(values[0]))
     lmp->error->all(FLERR, "Fix hardcontact maxiter: expected an integer, got '{}'", values[0]);
@@ -69,7 +72,7 @@ void parse_maxiter(LAMMPS *lmp, char **values, FixOptions &o)
   o.settings.maxiter = static_cast<int>(maxiter);
 }
 
-void parse_rho(LAMMPS *lmp, char **values, FixOptions &o)
+void parse_rho(LAMMPS *lmp, char **values, int, FixOptions &o)
 {
   o.settings.rho = number(lmp, "rho", values[0]);
   if (o.settings.rho <= 0.0)
@@ -77,7 +80,7 @@ void parse_rho(LAMMPS *lmp, char **values, FixOptions &o)
                            "step), got {}", values[0]);
 }
 
-void parse_warmstart(LAMMPS *lmp, char **values, FixOptions &o)
+void parse_warmstart(LAMMPS *lmp, char **values, int, FixOptions &o)
 {
   const std::string value = values[0];
   if (value != "yes" && value != "no")
@@ -85,7 +88,7 @@ void parse_warmstart(LAMMPS *lmp, char **values, FixOptions &o)
   o.warmstart = value == "yes";
 }
 
-void parse_wall(LAMMPS *lmp, char **values, FixOptions &o)
+void parse_wall(LAMMPS *lmp, char **values, int, FixOptions &o)
 {
   const std::string plane = values[0];
   int dim = -1;
@@ -111,14 +114,53 @@ void parse_wall(LAMMPS *lmp, char **values, FixOptions &o)
   if (has_hi) o.walls.push_back({dim, false, hi});
 }
 
+// e for the type pairs I, J (LAMMPS type ranges, default every pair); later lines win.
+void parse_restitution(LAMMPS *lmp, char **values, int n, FixOptions &o)
+{
+  const double e = number(lmp, "restitution", values[0]);
+  if (e < 0.0 || e > 1.0)
+    lmp->error->all(FLERR, "Fix hardcontact restitution must be in [0, 1] (0: inelastic, the "
+                           "paper's scheme; 1: elastic), got {}", values[0]);
+  const int ntypes = lmp->atom->ntypes;
+  int ilo = 1, ihi = ntypes, jlo = 1, jhi = ntypes;
+  if (n == 3) {
+    utils::bounds(FLERR, values[1], 1, ntypes, ilo, ihi, lmp->error);
+    utils::bounds(FLERR, values[2], 1, ntypes, jlo, jhi, lmp->error);
+  }
+  o.restitution.resize((ntypes + 1) * (ntypes + 1), 0.0);
+  for (int i = ilo; i <= ihi; ++i)
+    for (int j = jlo; j <= jhi; ++j) {
+      o.restitution[i * (ntypes + 1) + j] = e;
+      o.restitution[j * (ntypes + 1) + i] = e;
+    }
+}
+
+void parse_bounce(LAMMPS *lmp, char **values, int, FixOptions &o)
+{
+  o.bounce_vmin = number(lmp, "bounce", values[0]);
+  if (o.bounce_vmin < 0.0)
+    lmp->error->all(FLERR, "Fix hardcontact bounce must be a speed >= 0 (contacts closing "
+                           "slower stay inelastic), got {}", values[0]);
+}
+
 const Keyword keywords[] = {
-    {"solver", 1, parse_solver, "solver name: apgd (default), pgs, uzawa or exact"},
-    {"tol", 1, parse_tol, "tol value: row tolerance relative to the row scale, in (0, 1)"},
-    {"maxiter", 1, parse_maxiter, "maxiter N: at most N solver iterations per solve"},
-    {"rho", 1, parse_rho, "rho value: fixed solver step (omit: automatic)"},
-    {"warmstart", 1, parse_warmstart, "warmstart yes/no: start from the last step's forces"},
-    {"wall", 3, parse_wall, "wall xplane|yplane|zplane lo hi: flat walls, NULL for none"},
+    {"solver", 1, 0, parse_solver, "solver name: apgd (default), pgs, uzawa or exact"},
+    {"tol", 1, 0, parse_tol, "tol value: row tolerance relative to the row scale, in (0, 1)"},
+    {"maxiter", 1, 0, parse_maxiter, "maxiter N: at most N solver iterations per solve"},
+    {"rho", 1, 0, parse_rho, "rho value: fixed solver step (omit: automatic)"},
+    {"warmstart", 1, 0, parse_warmstart, "warmstart yes/no: start from the last step's forces"},
+    {"wall", 3, 0, parse_wall, "wall xplane|yplane|zplane lo hi: flat walls, NULL for none"},
+    {"restitution", 1, 2, parse_restitution,
+     "restitution e [I J]: Newton's restitution e in [0, 1] for type pairs I J (all: default)"},
+    {"bounce", 1, 0, parse_bounce, "bounce vmin: contacts closing slower stay inelastic"},
 };
+
+bool is_keyword(const char *word)
+{
+  for (const Keyword &k : keywords)
+    if (strcmp(word, k.name) == 0) return true;
+  return false;
+}
 
 // "solver, tol, ... or wall", from the table.
 std::string keyword_list()
@@ -146,8 +188,16 @@ FixOptions parse_keywords(LAMMPS *lmp, int narg, char **arg, int first)
     if (iarg + found->nvalues >= narg)
       lmp->error->all(FLERR, "Fix hardcontact {} needs {} value(s) after it", found->name,
                       found->nvalues);
-    found->parse(lmp, arg + iarg + 1, options);
-    iarg += 1 + found->nvalues;
+    int n = found->nvalues;
+    // optional values: present when the next word is not a keyword name
+    if (found->optional > 0 && iarg + n + 1 < narg && !is_keyword(arg[iarg + n + 1])) {
+      if (iarg + n + found->optional >= narg)
+        lmp->error->all(FLERR, "Fix hardcontact {} takes {} or {} value(s) after it",
+                        found->name, found->nvalues, found->nvalues + found->optional);
+      n += found->optional;
+    }
+    found->parse(lmp, arg + iarg + 1, n, options);
+    iarg += 1 + n;
   }
   return options;
 }

@@ -20,6 +20,9 @@ struct FixOptions {
   SolverSettings settings;
   std::vector<PlaneWall> walls;
   bool warmstart = true;
+  // restitution e per type pair, (ntypes + 1)^2 row-major; empty: inelastic (the paper)
+  std::vector<double> restitution;
+  double bounce_vmin = 0.0;
 };
 
 // Parses arg[first..narg-1]; stops with an error that names the keyword and what to write.

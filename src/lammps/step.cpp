@@ -33,13 +33,24 @@ ContactStep::ContactStep(LAMMPS *lmp, int groupbit, DistributedOps &ops,
 }
 
 StepResult ContactStep::solve(Solver &solver, const SolverSettings &settings,
-                              ContactHistory *history)
+                              ContactHistory *history, const std::vector<double> &restitution,
+                              double bounce_vmin)
 {
   const Bodies bodies = build_bodies(solver.traits().needs_owner_map);
   RowSink sink(problem_, atom->tag, atom->nlocal, free_speed_);
   sink.begin_candidates(1.0);
   offer_rows(bodies, sink);
-  const Targets targets{bodies.recovery_speed, free_speed_scale(problem_, ops_), settings.tol};
+  Targets targets{bodies.recovery_speed, free_speed_scale(problem_, ops_), settings.tol};
+  if (!restitution.empty()) {
+    // the approach speeds at the start of the step: u^n, ghosts from their owners
+    const int nlocal = atom->nlocal;
+    u_start_.resize(nlocal + atom->nghost);
+    for (int i = 0; i < nlocal; ++i) u_start_[i] = Vec3(atom->v[i]);
+    ops_.forward(u_start_.data()->data(), kDoublesPerVec3);
+    targets.u_start = &u_start_;
+    targets.restitution = &row_e_;
+    targets.bounce_vmin = bounce_vmin;
+  }
   // Warm start: each row starts from the multiplier its pair had at the last step, if any.
   if (history) history->load(problem_, atom->tag, mu_);
   else mu_.assign(problem_.n_contacts(), 0.0);
@@ -47,6 +58,7 @@ StepResult ContactStep::solve(Solver &solver, const SolverSettings &settings,
   StepResult result;
   int targeted = 0;    // rows before it have their targets
   for (;;) {
+    if (!restitution.empty()) restitution_of_rows(restitution, targeted);
     targets.apply(problem_, targeted);
     targeted = problem_.n_contacts();
     result.report = solver.solve(problem_, settings, ops_, mu_, u_);    // from the mu so far
@@ -89,6 +101,20 @@ double ContactStep::memory_usage() const
   double bytes = (sizeof(int) * 2 + sizeof(double) * 6) * problem_.body_i.capacity();
   bytes += sizeof(double) * 7 * problem_.inv_mass.capacity();
   return bytes;
+}
+
+// e of rows first.. from the atoms' types (a wall row: the atom's type with itself).
+void ContactStep::restitution_of_rows(const std::vector<double> &table, int first)
+{
+  const int nc = problem_.n_contacts();
+  const int stride = atom->ntypes + 1;
+  const int *type = atom->type;
+  row_e_.resize(nc);
+  for (int c = first; c < nc; ++c) {
+    const int ti = type[problem_.body_i[c]];
+    const int j = problem_.body_j[c];
+    row_e_[c] = table[ti * stride + (is_wall(j) ? ti : type[j])];
+  }
 }
 
 void ContactStep::offer_rows(const Bodies &bodies, RowSink &sink) const

@@ -34,7 +34,10 @@ class ContactStep : protected LAMMPS_NS::Pointers {
 
   // u^{n+1} from the state at q^n; history (nullptr: no warm start) gives the start values
   // and keeps the result.
-  StepResult solve(Solver &solver, const SolverSettings &settings, ContactHistory *history);
+  // restitution: e per type pair ((ntypes + 1)^2, keywords.h), empty for none; bounce_vmin: the
+  // approach speed below which contacts stay inelastic.
+  StepResult solve(Solver &solver, const SolverSettings &settings, ContactHistory *history,
+                   const std::vector<double> &restitution, double bounce_vmin);
   // Setup: stops with one collective error naming the first atom with a non-finite or
   // non-positive value, or with its centre behind a wall.
   void check_bodies(const std::vector<PlaneWall> &walls) const;
@@ -50,6 +53,7 @@ class ContactStep : protected LAMMPS_NS::Pointers {
  private:
   Bodies build_bodies(bool needs_owner_map);
   void offer_rows(const Bodies &bodies, class RowSink &sink) const;
+  void restitution_of_rows(const std::vector<double> &table, int first);
 
   int groupbit_;
   DistributedOps &ops_;
@@ -61,6 +65,8 @@ class ContactStep : protected LAMMPS_NS::Pointers {
   std::vector<Vec3> u_;
   std::vector<Vec3> x_owner_;
   std::vector<double> free_speed_;    // RowSink's |u_free| per body
+  std::vector<Vec3> u_start_;         // u^n per body, for restitution
+  std::vector<double> row_e_;         // restitution per row
   std::unordered_map<LAMMPS_NS::tagint, int> owner_index_;
 };
 

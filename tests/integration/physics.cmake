@@ -33,6 +33,13 @@ hardcontact_deck_test(NAME phys_cluster_ranks SCRIPT integration/test_phys_clust
 hardcontact_deck_test(NAME phys_cluster_ranks_full SCRIPT integration/test_phys_cluster_ranks.py
                       NP 4 LABELS physics soak ARGS --full TIMEOUT 2400)
 
+# restitution: head-on pair leaves at e V (per type pair), e = 0 bit-identical to none, a ball
+# bouncing to e^2 of its height until its impact speed falls below `bounce` (serial part)
+foreach(_np 1 2 4)
+  hardcontact_deck_test(NAME phys_restitution_np${_np} SCRIPT integration/test_phys_restitution.py
+                        NP ${_np} LABELS physics TIMEOUT 300)
+endforeach()
+
 # the neighbor rebuild look-ahead under acceleration: a falling sphere with a skin 9 x its step
 hardcontact_deck_test(NAME phys_skin_lookahead SCRIPT integration/test_phys_skin_lookahead.py
                       NP 1 LABELS physics TIMEOUT 300)
