@@ -27,5 +27,5 @@ for solver in apgd pgs uzawa; do
   o=$(count "cg.old.$solver.err"); n=$(count "cg.new.$solver.err")
   same=differs; cmp -s <(thermo "log.old.$solver") <(thermo "log.new.$solver") && same=identical
   awk -v s="$solver" -v t="$STEPS" -v o="$o" -v n="$n" -v m="$same" \
-    'BEGIN{printf "%-7s %5d  %16d  %16d  %7.3f  %s\n", s, t, o, n, n/o, m}'
+    'BEGIN{printf "%-7s %5d  %16.0f  %16.0f  %7.3f  %s\n", s, t, o, n, n/o, m}'
 done
