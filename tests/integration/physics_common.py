@@ -16,6 +16,28 @@ import lammps_run as lr
 DUMP_COLUMNS = "id type radius mass x y z vx vy vz f_hc[1] f_hc[2] f_hc[3] f_hc[4]"
 
 
+# One sphere of diameter 1 above a floor at z = 0 (periodic in x, y) under g = 1: format with
+# x, y, z (centre), fix_extra (keywords after the wall), h, and the output and run lines.
+DROP_ON_FLOOR = """
+units           lj
+atom_style      sphere
+dimension       3
+boundary        p p f
+atom_modify     map array
+region          box block -2 2 -2 2 0 10
+create_box      1 box
+create_atoms    1 single {x} {y} {z}
+set             atom 1 diameter 1.0 density 1.0
+pair_style      none
+neighbor        0.5 bin
+fix             hc all hardcontact wall zplane 0 NULL {fix_extra}
+fix             g all gravity 1.0 vector 0 0 -1
+timestep        {h}
+{output}
+run             {n}
+"""
+
+
 def sphere_mass(radius, density):
     """Mass LAMMPS gives an atom_style sphere atom from a data file (diameter, density) or
     `set density`: 4/3 pi r^3 rho, also in 2d (what the paper's 6.3 wants: spheres in a

@@ -22,6 +22,7 @@ import numpy as np
 
 import lammps_run as lr
 import physics_common as pc
+import test_phys_head_on as head_on
 
 TOL = 1e-10
 H = 0.1
@@ -29,48 +30,17 @@ E = np.array([1.0, 2.0, 2.0]) / 3.0
 T = np.array([0.2, -0.1, 0.0])
 NSTEPS = 30
 
-PAIR_DECK = """
-units           lj
-atom_style      sphere
-dimension       3
-boundary        f f f
-atom_modify     map array
-read_data       data.two
-{types}
-pair_style      none
-neighbor        1.0 bin
-fix             hc all hardcontact tol {tol} {keywords}
-timestep        {h}
-thermo_style    custom step atoms f_hc[1] f_hc[7]
-thermo_modify   format float %.16g
-thermo          1
-dump            d all custom 1 dump.atoms {cols}
-dump_modify     d format float %.17g sort id
-run             {n}
-"""
+# the head-on test's deck, with the keywords under test and an optional type change
+PAIR_DECK = head_on.DECK.replace("tol {tol}", "tol {tol} {keywords}").replace(
+    "read_data       data.two", "read_data       data.two\n{types}")
 
-BALL_DECK = """
-units           lj
-atom_style      sphere
-dimension       3
-boundary        p p f
-atom_modify     map array
-region          box block -2 2 -2 2 0 10
-create_box      1 box
-create_atoms    1 single 0.0 0.0 {z0}
-set             atom 1 diameter 1.0 density 1.0
-pair_style      none
-neighbor        0.5 bin
-fix             hc all hardcontact wall zplane 0 NULL restitution {e} bounce {vmin}
-fix             g all gravity 1.0 vector 0 0 -1
-timestep        0.001
-variable        z equal z[1]
-variable        vz equal vz[1]
-thermo_style    custom step v_z v_vz
-thermo_modify   format float %.12g
-thermo          1
-run             {n}
-"""
+BALL_DECK = pc.DROP_ON_FLOOR.format(
+    x=0.0, y=0.0, z="{z0}", fix_extra="restitution {e} bounce {vmin}", h=0.001, n="{n}",
+    output="variable        z equal z[1]\n"
+           "variable        vz equal vz[1]\n"
+           "thermo_style    custom step v_z v_vz\n"
+           "thermo_modify   format float %.12g\n"
+           "thermo          1")
 
 
 def pair_run(args, name, keywords, e_pair, dens=(1.0, 3.0), types=""):

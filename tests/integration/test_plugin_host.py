@@ -46,26 +46,11 @@ dump_modify     d format float %.16g sort id
 run             300
 """
 
-DROP_DECK = """
-units           lj
-atom_style      sphere
-dimension       3
-boundary        p p f
-atom_modify     map array
-region          box block -2 2 -2 2 0 10
-create_box      1 box
-create_atoms    1 single 0.1 -0.2 4.0
-set             atom 1 diameter 1.0 density 1.0
-pair_style      none
-neighbor        0.5 bin
-fix             hc all hardcontact tol {tol} wall zplane 0 NULL
-fix             g all gravity 1.0 vector 0 0 -1
-timestep        0.05
-thermo          20
-dump            d all custom 200 dump.atoms id type radius mass x y z vx vy vz
-dump_modify     d format float %.16g sort id
-run             200
-"""
+DROP_DECK = pc.DROP_ON_FLOOR.format(
+    x=0.1, y=-0.2, z=4.0, fix_extra="tol {tol}", h=0.05, n=200,
+    output="thermo          20\n"
+           "dump            d all custom 200 dump.atoms id type radius mass x y z vx vy vz\n"
+           "dump_modify     d format float %.17g sort id")
 
 
 def box_data(path):
