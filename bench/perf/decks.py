@@ -1,0 +1,113 @@
+"""LAMMPS decks of the performance benchmark: hardcontact runs and their soft-sphere twin
+(gran/hertz/history, frictionless, fix wall/gran, fix nve/sphere). LJ units, g = 1 along -z."""
+
+import math
+
+HEAD = """units           lj
+dimension       3
+atom_style      sphere
+boundary        f f f
+atom_modify     map array
+{processors}{start}
+"""
+
+HARD = """pair_style      none
+neighbor        {skin!r} bin
+neigh_modify    delay 0 every 1 check yes
+fix             grav all gravity 1.0 vector 0 0 -1
+fix             hc all hardcontact solver {solver} tol {tol!r} {walls}
+timestep        {h!r}
+thermo_style    custom step time cpu ke f_hc[1] f_hc[3] f_hc[4] f_hc[5] f_hc[6] f_hc[7] f_hc[9]
+thermo_modify   norm no
+"""
+
+# Wall-time cap of a run: the elapsed time of the run (thermo keyword cpu) checked every step.
+# (fix halt's own tlimit predicts its next check from the first steps' rate, so it overshoots
+# by minutes when the steps get dearer, as they do in a settle.) A soft halt leaves the timer
+# expired, which would stop every later run at once: hence `timer timeout off` after each run.
+HALT = """variable        elapsed equal cpu
+fix             halt all halt 1 v_elapsed > {cap!r} error soft message no
+"""
+UNHALT = """unfix           halt
+timer           timeout off
+"""
+
+
+def start_line(start):
+    kind, path = start
+    return ("read_data       %s" if kind == "data" else "read_restart    %s") % path
+
+
+def hard(scene, start, solver, tol, phases, h=0.02, skin=0.3, ranks_2d=False, restart_out=None):
+    """A hardcontact run: phases = [(steps, thermo_every, cap_seconds), ...], each a `run`
+    stopped by fix halt after cap_seconds of wall time; thermo columns step time cpu ke
+    f_hc[1,3,4,5,6,7,9]. ranks_2d: `processors * * 1` (domains split in x and y only).
+    restart_out: written after the first phase."""
+    text = HEAD.format(processors="processors      * * 1\n" if ranks_2d else "",
+                       start=start_line(start))
+    text += HARD.format(skin=skin, solver=solver, tol=tol, walls=scene["walls"], h=h)
+    for k, (steps, every, cap) in enumerate(phases):
+        text += HALT.format(cap=float(cap))
+        text += "thermo          %d\nrun             %d\n" % (every, steps)
+        text += UNHALT
+        if k == 0 and restart_out:
+            text += "write_restart   %s\n" % restart_out
+    return text
+
+
+def hertz_params(d, v, overlap, load, restitution, steps_per_contact):
+    """Coefficients of gran/hertz/history for spheres of diameter d (density 1): kn such that a
+    static load `load` between two of them overlaps by `overlap` x d (F = kn sqrt(R_eff) delta^1.5),
+    gamma_n for the restitution at impact speed v (the fit of potentials/glass_beads.params), and
+    dt = t_c / steps_per_contact with t_c Hertz's contact time of a pair impact at v."""
+    m = math.pi / 6.0 * d ** 3
+    m_eff, r_eff = m / 2.0, d / 4.0
+    delta = overlap * d
+    kn = load / (math.sqrt(r_eff) * delta ** 1.5)
+    delta_m = (m_eff * v * v / (kn * math.sqrt(r_eff))) ** 0.4
+    lnE = -math.log(restitution)
+    b = 2.8031 * lnE * (1.0 + 0.091785 * lnE) / math.sqrt(10.425 + lnE * lnE)
+    gamma_n = b * v / (math.sqrt(r_eff) * delta_m ** 1.5)
+    # a sphere on a wall: R_eff = R, m_eff = m
+    delta_w = (m * v * v / (kn * math.sqrt(2 * r_eff))) ** 0.4
+    gamma_w = b * v / (math.sqrt(2 * r_eff) * delta_w ** 1.5)
+    t_c = 3.2181 * delta_m / v
+    return dict(kn=kn, gamma_n=gamma_n, gamma_w=gamma_w, t_c=t_c, dt=t_c / steps_per_contact,
+                impact_overlap=delta_m / d)
+
+
+SOFT = """comm_modify     vel yes
+pair_style      gran/hertz/history {kn!r} NULL {gn!r} NULL 0.0 0
+pair_coeff      * *
+neighbor        {skin!r} bin
+neigh_modify    delay 0 every 1 check yes
+fix             grav all gravity 1.0 vector 0 0 -1
+fix             nve all nve/sphere
+fix             wx all wall/gran hertz/history {kn!r} NULL {gw!r} NULL 0.0 0 xplane 0.0 {wx!r}
+fix             wy all wall/gran hertz/history {kn!r} NULL {gw!r} NULL 0.0 0 yplane 0.0 {wy!r}
+fix             wz all wall/gran hertz/history {kn!r} NULL {gw!r} NULL 0.0 0 zplane 0.0 NULL
+timestep        {dt!r}
+compute         pl all pair/local force dist cutoff radius
+compute         pp all property/local patom1 patom2 cutoff radius
+compute         red all reduce max c_pl[1] c_pl[2] c_pp[1] c_pp[2] replace 2 1 replace 3 1 replace 4 1
+compute         rad all property/atom radius
+variable        wo atom (c_rad-z)/c_rad
+compute         wmax all reduce max v_wo
+thermo_style    custom step time cpu ke c_red[1] c_red[2] c_red[3] c_red[4] c_wmax
+thermo_modify   norm no
+"""
+
+
+def soft(scene, data, p, phases, skin=0.1):
+    """The soft twin of a hard run: same data file, walls as fix wall/gran. Thermo: step time
+    cpu ke, the pair with the largest force (force, distance, ids: its overlap follows from the
+    radii of the data file) and the largest wall overlap relative to the radius (floor)."""
+    (_, wx), (_, wy), _ = scene["box"]
+    text = HEAD.format(processors="newton          off\n", start=start_line(("data", data)))
+    text += SOFT.format(kn=p["kn"], gn=p["gamma_n"], gw=p["gamma_w"], dt=p["dt"], skin=skin,
+                        wx=wx, wy=wy)
+    for steps, every, cap in phases:
+        text += HALT.format(cap=float(cap))
+        text += "thermo          %d\nrun             %d\n" % (every, steps)
+        text += UNHALT
+    return text

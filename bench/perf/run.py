@@ -1,0 +1,342 @@
+#!/usr/bin/env python3
+"""Performance of fix hardcontact (issue 15): drives every LAMMPS run of the benchmark, one at
+a time, and writes bench/results/perf_runs.csv (one row per run), perf_steps.csv (per-step
+solver output of the hard runs) and perf_machine.csv. Called by bench/run_perf.sh."""
+
+import argparse
+import csv
+import importlib.util
+import math
+import os
+import subprocess
+import sys
+import time
+from pathlib import Path
+
+import numpy as np
+
+HERE = Path(__file__).resolve().parent
+sys.path.insert(0, str(HERE))
+import decks  # noqa: E402
+import scenes  # noqa: E402
+
+# running decks and reading logs: bench/accuracy/lmp.py (loaded by path: the accuracy
+# benchmark has modules named like ours)
+_spec = importlib.util.spec_from_file_location("acc_lmp", str(HERE.parent / "accuracy" / "lmp.py"))
+lmp = importlib.util.module_from_spec(_spec)
+_spec.loader.exec_module(lmp)
+
+SETTLE_KE = 5e-3   # "settled": kinetic energy per sphere stays below this x mean m g d
+
+
+def settle_time(ke, cpu):
+    """Wall time (thermo cpu) from which the kinetic energy per sphere (in m g d) stays below
+    SETTLE_KE; nan if it does not (the spheres start at rest, so the first crossing is not it)."""
+    above = np.nonzero(ke >= SETTLE_KE)[0]
+    if len(above) == 0 or above[-1] + 1 >= len(ke):
+        return float("nan")
+    return float(cpu[above[-1] + 1])
+
+
+def config(quick):
+    """Sizes, run lengths (steps of h = 0.02) and wall-time caps (s) per run (fix halt)."""
+    if quick:
+        return dict(
+            footprint=6, layers=[5, 10], exact_layers=5, settle=lambda L: 150 + 20 * L,
+            window=15, settle_cap=15.0, window_cap=8.0, apgd_cap=60.0,
+            tray_ratios=[1, 1000], tray_settle=150, tray_window=20,
+            tray_solvers=["apgd", "pgs"], throughput=[(10, 5), (16, 5)], thr_steps=150, thr_cap=20.0,
+            ts_pile=(8, 8, 10), soft_overlaps=[1e-3, 1e-4], soft_cap=40.0, mpi_tols=[1e-2])
+    return dict(
+        footprint=10, layers=[5, 10, 20, 40], exact_layers=5, settle=lambda L: 200 + 20 * L,
+        window=40, settle_cap=20.0, window_cap=12.0, apgd_cap=200.0,
+        tray_ratios=[1, 10, 100, 1000], tray_settle=200, tray_window=50,
+        tray_solvers=["apgd", "pgs", "uzawa"], throughput=[(10, 10), (20, 10), (32, 10), (45, 10)],
+        thr_steps=250, thr_cap=45.0,
+        ts_pile=(20, 20, 20), soft_overlaps=[1e-3, 1e-4, 1e-5, 1e-6], soft_cap=120.0,
+        mpi_tols=[1e-4, 1e-2])
+
+
+def loadavg():
+    return open("/proc/loadavg").read().split()[0]
+
+
+class Bench:
+    def __init__(self, args):
+        self.a = args
+        self.cfg = config(args.quick)
+        self.work = Path(args.work).resolve()
+        self.results = Path(args.results)
+        self.work.mkdir(parents=True, exist_ok=True)
+        self.results.mkdir(parents=True, exist_ok=True)
+        self.runs = []
+        self.steps = []
+        self.t0 = time.time()
+        self.data = {}
+
+    def note(self, msg):
+        print("[%5.0f s, load %s] %s" % (time.time() - self.t0, loadavg(), msg), flush=True)
+
+    # ---- running
+
+    def datafile(self, scene, name):
+        path = self.work / (name + ".data")
+        if name not in self.data:
+            scenes.write(scene, path)
+            self.data[name] = scene
+        return path
+
+    def launch(self, exe, deck, rundir, ranks=1, timeout=1800):
+        """Run a deck (serial, or mpirun -np ranks); return (log text, wall s, load before,
+        load after)."""
+        rundir.mkdir(parents=True, exist_ok=True)
+        (rundir / "in.deck").write_text(deck)
+        before = loadavg()
+        t = time.time()
+        if ranks == 1:
+            text, _ = lmp.run(exe, deck, rundir, timeout=timeout)
+        else:
+            env = dict(os.environ, OMP_NUM_THREADS="1", OMPI_ALLOW_RUN_AS_ROOT="1",
+                       OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
+            p = subprocess.run(["mpirun", "--oversubscribe", "-np", str(ranks), str(exe), "-in",
+                                "in.deck", "-log", "log.lammps", "-screen", "none"],
+                               cwd=str(rundir), stdout=subprocess.PIPE, stderr=subprocess.PIPE,
+                               text=True, timeout=timeout, env=env)
+            text = (rundir / "log.lammps").read_text()
+            if p.returncode != 0 or "ERROR" in text:
+                raise lmp.LammpsError("mpirun in %s failed (rc %d): %s" % (rundir, p.returncode,
+                                                                            p.stderr[-500:]))
+        return text, time.time() - t, before, loadavg()
+
+    def hard(self, rid, group, scene, data, solver, tol, phases, names, extra=None,
+             start=None, restart_out=None, ranks=1):
+        """One hardcontact run with the given phases [(steps, cap)], thermo every step; one row
+        per phase in perf_runs.csv."""
+        rundir = self.work / rid
+        start = start or ("data", str(data))
+        deck = decks.hard(scene, start, solver, tol, [(n, 1, cap) for n, cap in phases],
+                          ranks_2d=ranks > 1 or (extra or {}).get("mpi_ref", False),
+                          restart_out=restart_out and str(rundir / restart_out))
+        self.note("%s: %s tol %g, %d spheres, %s ranks %d" % (rid, solver, tol, scene["n"],
+                                                             "+".join(str(n) for n, _ in phases), ranks))
+        try:
+            text, wall, lb, la = self.launch(self.a.lmp, deck, rundir, ranks)
+        except lmp.LammpsError as e:
+            self.note("FAILED: %s" % str(e).splitlines()[0])
+            self.runs.append(dict(id=rid, group=group, solver=solver, tol=tol, n=scene["n"],
+                                  ranks=ranks, status="failed"))
+            return []
+        blocks, times = lmp.thermo_blocks(text), lmp.timings(text)
+        mgd = scene["mean_mass"] * scene["mean_d"]
+        rows = []
+        for k, ((nreq, cap), name) in enumerate(zip(phases, names)):
+            if k >= len(blocks):
+                break
+            b, t = blocks[k], times[k]
+            sl = slice(1, None)  # the first row is the state before the run
+            it, cand, act = b["f_hc[1]"][sl], b["f_hc[3]"][sl], b["f_hc[4]"][sl]
+            done = len(it)
+            ke = b["KinEng"] / scene["n"] / mgd
+            row = dict(id=rid, group=group, phase=name, solver=solver, tol=tol, n=scene["n"],
+                       layers=scene.get("layers", ""), ratio=scene.get("mass_ratio", ""),
+                       ranks=ranks, status="ok" if done >= nreq else "capped",
+                       steps=done, steps_asked=nreq, cap_s=cap,
+                       it_mean=float(it.mean()) if done else float("nan"),
+                       it_median=float(np.median(it)) if done else float("nan"),
+                       it_max=float(it.max()) if done else float("nan"),
+                       cand_mean=float(cand.mean()) if done else float("nan"),
+                       active_mean=float(act.mean()) if done else float("nan"),
+                       solves_mean=float(b["f_hc[9]"][sl].mean()) if done else float("nan"),
+                       maxiter_stops=int(b["f_hc[6]"][-1]),
+                       overlap_max=float(b["f_hc[7]"].max()),
+                       ke_end=float(ke[-1]),
+                       settle_wall_s=settle_time(ke, b["CPU"]),
+                       loop_s=t["loop"], modify_s=t.get("Modify", float("nan")),
+                       neigh_s=t.get("Neigh", float("nan")), comm_s=t.get("Comm", float("nan")),
+                       ci_cand=float((it * cand).sum()), ci_active=float((it * act).sum()),
+                       load_before=lb, load_after=la, wall_s=wall)
+            row["ci_per_s_cand"] = row["ci_cand"] / row["modify_s"] if row["modify_s"] > 0 else float("nan")
+            row["ci_per_s_active"] = row["ci_active"] / row["modify_s"] if row["modify_s"] > 0 else float("nan")
+            row["ms_per_step"] = 1e3 * t["loop"] / max(done, 1)
+            row.update(extra or {})
+            rows.append(row)
+            for s, a, c, ac, e, o in zip(b["Step"][sl], it, cand, act, ke[1:], b["f_hc[7]"][sl]):
+                self.steps.append(dict(id=rid, phase=name, step=int(s), iterations=int(a),
+                                       candidates=int(c), active=int(ac), ke_per_mgd=float(e),
+                                       overlap=float(o)))
+        self.runs.extend(rows)
+        self.note("  -> " + "; ".join("%s: %d steps, %.0f it/step, %.1f ms/step%s" % (
+            r["phase"], r["steps"], r["it_mean"], r["ms_per_step"],
+            " (capped)" if r["status"] == "capped" else "") for r in rows))
+        self.save()
+        return rows
+
+    def soft(self, rid, group, scene, data, overlap, duration, extra=None):
+        """Soft twin: kn for a static overlap `overlap` x d under the load of a column of the
+        pile, restitution 0.1, dt = t_c / 20 at the top layer's impact speed (the convention of
+        potentials/glass_beads.params); runs `duration` time units."""
+        layers = scene.get("layers", 10)
+        d, m = scene["mean_d"], scene["mean_mass"]
+        v = max(1.0, math.sqrt(2.0 * (scenes.SPACING - scenes.D_MIN) * layers))
+        p = decks.hertz_params(d, v, overlap, layers * m, 0.1, 20)
+        nsteps = int(round(duration / p["dt"]))
+        every = max(nsteps // 200, 1)
+        rundir = self.work / rid
+        deck = decks.soft(scene, str(data), p, [(nsteps, every, self.cfg["soft_cap"])])
+        self.note("%s: soft, static overlap target %g, kn %.3g, dt %.3g, %d steps, %d spheres" % (
+            rid, overlap, p["kn"], p["dt"], nsteps, scene["n"]))
+        try:
+            text, wall, lb, la = self.launch(self.a.soft_lmp, deck, rundir)
+        except lmp.LammpsError as e:
+            self.note("FAILED: %s" % str(e).splitlines()[0])
+            return None
+        b, t = lmp.thermo_blocks(text)[0], lmp.timings(text)[0]
+        radius = 0.5 * np.asarray(scene["d"])
+        pair = []
+        for f, dist, i, j in zip(b["c_red[1]"], b["c_red[2]"], b["c_red[3]"], b["c_red[4]"]):
+            if f > 0 and i >= 1 and j >= 1:
+                rs = radius[int(i) - 1] + radius[int(j) - 1]
+                pair.append((rs - dist) / rs)
+        pair = np.array(pair) if pair else np.zeros(1)
+        wall_ov = np.maximum(b["c_wmax"], 0.0)
+        ke = b["KinEng"] / scene["n"] / (m * d)
+        tail = max(len(pair) // 10, 1)
+        row = dict(id=rid, group=group, phase="settle", solver="soft", tol=overlap, n=scene["n"],
+                   layers=layers, ranks=1, status="ok" if t["steps"] >= nsteps else "capped",
+                   steps=t["steps"], steps_asked=nsteps, cap_s=self.cfg["soft_cap"],
+                   kn=p["kn"], dt=p["dt"], t_c=p["t_c"], simulated=t["steps"] * p["dt"],
+                   overlap_max=float(max(pair.max(), wall_ov.max())),
+                   overlap_pair_max=float(pair.max()), overlap_wall_max=float(wall_ov.max()),
+                   overlap_rest=float(max(pair[-tail:].max(), wall_ov[-tail:].max())),
+                   ke_end=float(ke[-1]),
+                   settle_wall_s=settle_time(ke, b["CPU"]),
+                   loop_s=t["loop"], modify_s=t.get("Modify", float("nan")),
+                   projected_s=t["loop"] * nsteps / max(t["steps"], 1),
+                   pair_s=t.get("Pair", float("nan")), neigh_s=t.get("Neigh", float("nan")),
+                   ms_per_step=1e3 * t["loop"] / max(t["steps"], 1),
+                   load_before=lb, load_after=la, wall_s=wall)
+        row.update(extra or {})
+        self.runs.append(row)
+        self.note("  -> %d steps, %.1f s, largest overlap %.2g (at rest %.2g), KE end %.2g" % (
+            row["steps"], row["loop_s"], row["overlap_max"], row["overlap_rest"], row["ke_end"]))
+        self.save()
+        return row
+
+    # ---- the five measurements
+
+    def heights(self):
+        c = self.cfg
+        fp = c["footprint"]
+        for L in c["layers"]:
+            sc = scenes.pile(fp, fp, L)
+            name = "pile%dx%dx%d" % (fp, fp, L)
+            data = self.datafile(sc, name)
+            settle, win = c["settle"](L), c["window"]
+            rid = "heights_%s_apgd" % name
+            self.hard(rid, "heights", sc, data, "apgd", 1e-4,
+                      [(settle, c["apgd_cap"]), (win, c["apgd_cap"])], ["settle", "rest"],
+                      restart_out="settled.restart")
+            restart = self.work / rid / "settled.restart"
+            others = ["pgs", "uzawa"] + (["exact"] if L <= c["exact_layers"] else [])
+            for solver in others:
+                cap = c["settle_cap"] * (2 if solver == "exact" else 1)
+                self.hard("heights_%s_%s_settle" % (name, solver), "heights", sc, data, solver, 1e-4,
+                          [(settle, cap)], ["settle"])
+                if restart.exists():
+                    self.hard("heights_%s_%s_rest" % (name, solver), "heights", sc, data, solver,
+                              1e-4, [(win, c["window_cap"])], ["rest"],
+                              start=("restart", str(restart)))
+
+    def tray(self):
+        c = self.cfg
+        for ratio in c["tray_ratios"]:
+            sc = scenes.tray(ratio)
+            name = "tray_m%d" % ratio
+            data = self.datafile(sc, name)
+            rid = "tray_%s_apgd" % name
+            self.hard(rid, "tray", sc, data, "apgd", 1e-4,
+                      [(c["tray_settle"], 60.0), (c["tray_window"], 60.0)], ["settle", "rest"],
+                      restart_out="settled.restart")
+            restart = self.work / rid / "settled.restart"
+            for solver in c["tray_solvers"]:
+                if solver != "apgd" and restart.exists():
+                    self.hard("tray_%s_%s_rest" % (name, solver), "tray", sc, data, solver, 1e-4,
+                              [(c["tray_window"], c["window_cap"])], ["rest"],
+                              start=("restart", str(restart)))
+
+    def throughput(self):
+        c = self.cfg
+        for fp, L in c["throughput"]:
+            sc = scenes.pile(fp, fp, L)
+            name = "pile%dx%dx%d" % (fp, fp, L)
+            data = self.datafile(sc, name)
+            self.hard("throughput_%s_apgd" % name, "throughput", sc, data, "apgd", 1e-4,
+                      [(c["thr_steps"], c["thr_cap"])], ["settle"])
+
+    def hard_vs_soft_and_mpi(self):
+        """The issue's pile (20 x 20 x 20 in full mode): hard at tol 1e-4 and 1e-2 (serial runs
+        with `processors * * 1`, the 1-rank references of the MPI runs), its soft twin at static
+        overlaps 1e-3.. and the 10 x 10 x 20 pile's twin, then 2 ranks."""
+        c = self.cfg
+        nx, ny, L = c["ts_pile"]
+        sc = scenes.pile(nx, ny, L)
+        name = "pile%dx%dx%d" % (nx, ny, L)
+        data = self.datafile(sc, name)
+        steps = c["settle"](L)
+        duration = steps * 0.02
+        for tol in (1e-4, 1e-2):
+            self.hard("tts_%s_apgd_tol%g" % (name, tol), "tts", sc, data, "apgd", tol,
+                      [(steps, 400.0)], ["settle"], extra=dict(mpi_ref=True))
+        for ov in c["soft_overlaps"][:2]:
+            self.soft("tts_%s_soft_%g" % (name, ov), "tts", sc, data, ov, duration)
+        # the stiffness sweep on the smaller pile of the heights series (same duration)
+        fp = c["footprint"]
+        L2 = max(l for l in c["layers"] if l <= L)
+        sc2 = scenes.pile(fp, fp, L2)
+        name2 = "pile%dx%dx%d" % (fp, fp, L2)
+        data2 = self.datafile(sc2, name2)
+        steps2 = c["settle"](L2)
+        self.hard("tts_%s_apgd_tol0.01" % name2, "tts", sc2, data2, "apgd", 1e-2, [(steps2, 200.0)],
+                  ["settle"])
+        for ov in c["soft_overlaps"]:
+            self.soft("tts_%s_soft_%g" % (name2, ov), "tts", sc2, data2, ov, steps2 * 0.02)
+        for tol in c["mpi_tols"]:
+            self.hard("mpi2_%s_apgd_tol%g" % (name, tol), "mpi", sc, data, "apgd", tol,
+                      [(steps, 400.0)], ["settle"], ranks=2)
+
+    # ---- output
+
+    def save(self):
+        for fname, rows in (("perf_runs.csv", self.runs), ("perf_steps.csv", self.steps)):
+            keys = []
+            for r in rows:
+                keys += [k for k in r if k not in keys]
+            with open(str(self.results / fname), "w", newline="") as f:
+                w = csv.DictWriter(f, fieldnames=keys, restval="")
+                w.writeheader()
+                for r in rows:
+                    w.writerow({k: ("%.6g" % v if isinstance(v, float) else v) for k, v in r.items()})
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__)
+    ap.add_argument("--quick", action="store_true")
+    ap.add_argument("--lmp", required=True)
+    ap.add_argument("--soft-lmp", required=True)
+    ap.add_argument("--work", required=True)
+    ap.add_argument("--results", required=True)
+    ap.add_argument("--only", default="heights,tray,throughput,tts",
+                    help="comma-separated subset of heights,tray,throughput,tts")
+    a = ap.parse_args()
+    b = Bench(a)
+    only = a.only.split(",")
+    for part, fn in (("heights", b.heights), ("tray", b.tray), ("throughput", b.throughput),
+                     ("tts", b.hard_vs_soft_and_mpi)):
+        if part in only:
+            fn()
+    b.save()
+    b.note("done")
+
+
+if __name__ == "__main__":
+    main()

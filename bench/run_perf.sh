@@ -1,0 +1,65 @@
+#!/usr/bin/env bash
+# Performance of fix hardcontact (issue 15): iterations per step against pile height for every
+# solver, a resting scene with mass ratios 1..1000, contact-iterations per second against N,
+# time to solution hard vs soft (gran/hertz/history twin), 1 vs 2 MPI ranks. Regenerates
+# doc/performance.md, doc/figures/perf_*.png and bench/results/perf_*.csv.
+#
+#   bench/run_perf.sh [--quick]
+#
+# --quick: small sizes (about 3 minutes; for development). The full run takes about 20 minutes
+# on 2 cores. Runs are one at a time (serial except the 2-rank ones); every run has a wall-time
+# cap (fix halt) so the total stays bounded on a loaded machine (capped runs are marked).
+# Environment: HARDCONTACT_LMP (default build/lmp_hardcontact; build it once and do not rebuild
+# it while measuring), HARDCONTACT_SOURCE_DESC (what that launcher was built from; default:
+# this tree's commit), SOFT_LMP (default /usr/bin/lmp), BENCH_WORKDIR (scratch, default
+# bench/work: data files, logs, restarts; not committed), PERF_ONLY (subset of
+# heights,tray,throughput,tts).
+set -euo pipefail
+ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+PY=/usr/bin/python3
+MODE=full
+QUICK=()
+if [ "${1:-}" = "--quick" ]; then MODE=quick; QUICK=(--quick); shift; fi
+[ $# -eq 0 ] || { echo "usage: $0 [--quick]" >&2; exit 2; }
+LMP="${HARDCONTACT_LMP:-$ROOT/build/lmp_hardcontact}"
+SOFT_LMP="${SOFT_LMP:-/usr/bin/lmp}"
+[ -x "$LMP" ] || { echo "no $LMP: build first (bash .ci/build.sh) or set HARDCONTACT_LMP" >&2; exit 1; }
+[ -x "$SOFT_LMP" ] || { echo "no $SOFT_LMP (Debian package lammps): set SOFT_LMP" >&2; exit 1; }
+WORK="${BENCH_WORKDIR:-$ROOT/bench/work}/perf-$MODE"
+RESULTS="$ROOT/bench/results"
+mkdir -p "$WORK" "$RESULTS"
+
+# what the launcher was built from: HARDCONTACT_SOURCE_DESC, else this tree's commit
+GIT="${HARDCONTACT_SOURCE_DESC:-}"
+if [ -z "$GIT" ]; then
+  GIT="$(cd "$ROOT" && git rev-parse --short HEAD 2>/dev/null || echo unknown)"
+  if [ -n "$(cd "$ROOT" && git status --porcelain --untracked-files=no -- src cmake CMakeLists.txt 2>/dev/null)" ]; then
+    GIT="$GIT + uncommitted changes in src/ or cmake/"
+  fi
+fi
+T0=$SECONDS
+LOAD_BEFORE="$(cut -d' ' -f1-3 /proc/loadavg)"
+"$PY" "$ROOT/bench/perf/run.py" "${QUICK[@]}" --lmp "$LMP" --soft-lmp "$SOFT_LMP" \
+  --work "$WORK" --results "$RESULTS" --only "${PERF_ONLY:-heights,tray,throughput,tts}" \
+  2>&1 | tee "$WORK/run_log.txt"
+LOAD_AFTER="$(cut -d' ' -f1-3 /proc/loadavg)"
+cp "$WORK/run_log.txt" "$RESULTS/perf_run_log.txt"
+
+LAMMPS_VERSION="$(echo "info" | "$SOFT_LMP" 2>/dev/null | sed -n 's/^LAMMPS (\(.*\))$/\1/p' | head -1)"
+CPU="$(sed -n 's/^model name[[:space:]]*: //p' /proc/cpuinfo | head -1)"
+{
+  echo "key,value"
+  echo "mode,$MODE"
+  echo "date,$(date -u '+%Y-%m-%d %H:%M UTC')"
+  echo "nproc,$(nproc)"
+  echo "cpu,\"$CPU\""
+  echo "load_before,$LOAD_BEFORE"
+  echo "load_after,$LOAD_AFTER"
+  echo "lammps,$LAMMPS_VERSION"
+  echo "hardcontact,$GIT"
+  echo "launcher,$LMP"
+  echo "minutes,$(( (SECONDS - T0) / 60 ))"
+} > "$RESULTS/perf_machine.csv"
+"$PY" "$ROOT/bench/perf/report.py" --results "$RESULTS" --doc "$ROOT/doc/performance.md" \
+  --figures "$ROOT/doc/figures"
+echo "performance benchmark ($MODE): $(( (SECONDS - T0) / 60 )) min; doc/performance.md"
