@@ -19,6 +19,9 @@ namespace hardcontact {
 // speed is exact, the position of the impact within the step is not resolved (an error below
 // h |v| in the gap). Rows in resting contact (v ~ 0) stay inelastic. e = 0 is the paper's
 // scheme. The target is negative, so the energy test counts its work as allowed (residual.h).
+// A moving wall: its velocity over the step enters as + h n . u_wall, after the overlap clamp
+// (the wall's motion is not an overlap to limit), so that g >= 0 keeps the sphere clear of
+// where the wall will be; the work the wall does is allowed in the same way (negative target).
 void Targets::apply(ContactProblem &p, int first_row) const
 {
   const int nc = p.n_contacts();
@@ -30,11 +33,18 @@ void Targets::apply(ContactProblem &p, int first_row) const
       const double s = std::min(p.size[c], h * speed_scale);
       p.gap[c] = std::max(d, -(h * recovery_speed + 2.0 * tol * s));
     }
+    // a moving wall: g = D + h n . (u_wall - u_i), the gap to where the wall will be
+    const int j = p.body_j[c];
+    if (wall_velocity != nullptr && is_wall(j))
+      p.gap[c] += h * p.normal[c].dot((*wall_velocity)[wall_index(j)]);
     if (u_start == nullptr) continue;
     const double e = (*restitution)[c];
     if (e <= 0.0) continue;
-    const double v = p.normal_speed(c, *u_start);
-    if (v >= -bounce_vmin || d + h * p.normal_speed(c, p.u_free) >= 0.0) continue;
+    const Vec3 uw = wall_velocity != nullptr && is_wall(j) ? (*wall_velocity)[wall_index(j)]
+                                                           : Vec3::Zero().eval();
+    const double v = p.normal_speed(c, *u_start) + (is_wall(j) ? p.normal[c].dot(uw) : 0.0);
+    const double v_free = p.normal_speed(c, p.u_free) + (is_wall(j) ? p.normal[c].dot(uw) : 0.0);
+    if (v >= -bounce_vmin || d + h * v_free >= 0.0) continue;
     p.gap[c] = std::min(p.gap[c], 0.0) + h * e * v;
   }
 }

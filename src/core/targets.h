@@ -19,6 +19,9 @@ struct Targets {
   const std::vector<Vec3> *u_start = nullptr;
   const std::vector<double> *restitution = nullptr;
   double bounce_vmin = 0.0;
+  // Moving obstacles, off while null: the velocity of each wall (by wall_index), which enters
+  // a wall row's target as + h n . u_wall (the gap target moves with the wall).
+  const std::vector<Vec3> *wall_velocity = nullptr;
 
   // Rows first_row.. of p, added since the last call.
   void apply(ContactProblem &p, int first_row) const;

@@ -36,7 +36,7 @@ const int HISTORY_VALUES = hardcontact::NormalLaw::block;    // per contact: the
 FixHardContact::FixHardContact(LAMMPS *lmp, int narg, char **arg) :
     Fix(lmp, narg, arg), options_(checked_options(lmp, narg, arg)),
     solver_(hardcontact::make_solver(options_.solver_name)), reach_(lmp), pairs_(lmp, groupbit),
-    walls_(lmp, groupbit, std::move(options_.walls)), history_(memory, HISTORY_VALUES),
+    walls_(lmp, groupbit, std::move(options_.walls), std::move(options_.wall_variables)), history_(memory, HISTORY_VALUES),
     step_(lmp, groupbit, ops_, reach_, {&pairs_, &walls_}), integrate_(lmp, groupbit),
     outputs_(lmp, this)
 {
@@ -92,6 +92,7 @@ void FixHardContact::init()
     error->all(FLERR, "Fix hardcontact does not support triclinic boxes: use an orthogonal box");
   if (utils::strmatch(update->integrate_style, "^respa"))
     error->all(FLERR, "Fix hardcontact does not support run_style respa: use verlet");
+  walls_.init_positions();
   walls_.check_in_box();
   if (!solver_->traits().distributed && comm->nprocs > 1)
     error->all(FLERR, "Fix hardcontact solver {} runs on one processor only (it assembles "
@@ -119,6 +120,7 @@ void FixHardContact::post_neighbor()
 // Step 0: no solve yet, but the diagnostics describe the positions the run starts from.
 void FixHardContact::setup(int)
 {
+  walls_.init_positions();    // moving walls where their variables put them at this step
   step_.check_bodies(walls_.walls());
   step_.find_overlaps(*solver_);
   outputs_.start_of_run(step_.problem(), walls_.walls(), options_.settings.tol);
@@ -128,9 +130,13 @@ void FixHardContact::setup(int)
 // One step of scheme (S) (step.h), then its outputs at q^n, then q^{n+1} = q^n + h u^{n+1}.
 void FixHardContact::initial_integrate(int)
 {
+  hardcontact::StepEffects effects;
+  effects.restitution = &options_.restitution;
+  effects.bounce_vmin = options_.bounce_vmin;
+  effects.wall_velocity = walls_.advance(update->dt);
   const hardcontact::StepResult result =
-      step_.solve(*solver_, options_.settings, options_.warmstart ? &history_ : nullptr,
-                  options_.restitution, options_.bounce_vmin);
+      step_.solve(*solver_, options_.settings, options_.warmstart ? &history_ : nullptr, effects);
+  walls_.commit(update->dt);    // the outputs measure q^{n+1} against the walls at t^{n+1}
   if (options_.warmstart) history_resized();
   outputs_.record_step(result, step_.problem(), step_.mu(), step_.u(), walls_.walls(),
                        options_.settings);

@@ -104,14 +104,24 @@ void parse_wall(LAMMPS *lmp, char **values, int, FixOptions &o)
   const bool has_hi = strcmp(values[2], "NULL") != 0;
   if (!has_lo && !has_hi)
     lmp->error->all(FLERR, "Fix hardcontact wall {}: lo and hi cannot both be NULL", plane);
+  // a position is a number, or v_name: an equal-style variable, a moving wall
+  auto variable = [](const char *word) { return strncmp(word, "v_", 2) == 0 ? word + 2 : ""; };
+  const std::string var_lo = has_lo ? variable(values[1]) : "";
+  const std::string var_hi = has_hi ? variable(values[2]) : "";
   double lo = 0.0, hi = 0.0;
-  if (has_lo) lo = number(lmp, "wall lo", values[1]);
-  if (has_hi) hi = number(lmp, "wall hi", values[2]);
-  if (has_lo && has_hi && lo >= hi)
+  if (has_lo && var_lo.empty()) lo = number(lmp, "wall lo", values[1]);
+  if (has_hi && var_hi.empty()) hi = number(lmp, "wall hi", values[2]);
+  if (has_lo && has_hi && var_lo.empty() && var_hi.empty() && lo >= hi)
     lmp->error->all(FLERR, "Fix hardcontact wall {}: lo ({}) must be below hi ({})", plane, lo,
                     hi);
-  if (has_lo) o.walls.push_back({dim, true, lo});
-  if (has_hi) o.walls.push_back({dim, false, hi});
+  if (has_lo) {
+    o.walls.push_back({dim, true, lo});
+    o.wall_variables.push_back(var_lo);
+  }
+  if (has_hi) {
+    o.walls.push_back({dim, false, hi});
+    o.wall_variables.push_back(var_hi);
+  }
 }
 
 // e for the type pairs I, J (LAMMPS type ranges, default every pair); later lines win.
@@ -149,7 +159,8 @@ const Keyword keywords[] = {
     {"maxiter", 1, 0, parse_maxiter, "maxiter N: at most N solver iterations per solve"},
     {"rho", 1, 0, parse_rho, "rho value: fixed solver step (omit: automatic)"},
     {"warmstart", 1, 0, parse_warmstart, "warmstart yes/no: start from the last step's forces"},
-    {"wall", 3, 0, parse_wall, "wall xplane|yplane|zplane lo hi: flat walls, NULL for none"},
+    {"wall", 3, 0, parse_wall,
+     "wall xplane|yplane|zplane lo hi: flat walls, NULL for none, v_name for a moving one"},
     {"restitution", 1, 2, parse_restitution,
      "restitution e [I J]: Newton's restitution e in [0, 1] for type pairs I J (all: default)"},
     {"bounce", 1, 0, parse_bounce, "bounce vmin: contacts closing slower stay inelastic"},

@@ -19,6 +19,7 @@ struct FixOptions {
   std::string solver_name = "apgd";
   SolverSettings settings;
   std::vector<PlaneWall> walls;
+  std::vector<std::string> wall_variables;    // per wall: equal-style variable name, or ""
   bool warmstart = true;
   // restitution e per type pair, (ntypes + 1)^2 row-major; empty: inelastic (the paper)
   std::vector<double> restitution;

@@ -33,15 +33,17 @@ ContactStep::ContactStep(LAMMPS *lmp, int groupbit, DistributedOps &ops,
 }
 
 StepResult ContactStep::solve(Solver &solver, const SolverSettings &settings,
-                              ContactHistory *history, const std::vector<double> &restitution,
-                              double bounce_vmin)
+                              ContactHistory *history, const StepEffects &effects)
 {
+  const bool restitution = effects.restitution && !effects.restitution->empty();
   const Bodies bodies = build_bodies(solver.traits().needs_owner_map);
   RowSink sink(problem_, atom->tag, atom->nlocal, free_speed_);
+  sink.set_wall_velocities(effects.wall_velocity);
   sink.begin_candidates(1.0);
   offer_rows(bodies, sink);
   Targets targets{bodies.recovery_speed, free_speed_scale(problem_, ops_), settings.tol};
-  if (!restitution.empty()) {
+  targets.wall_velocity = effects.wall_velocity;
+  if (restitution) {
     // the approach speeds at the start of the step: u^n, ghosts from their owners
     const int nlocal = atom->nlocal;
     u_start_.resize(nlocal + atom->nghost);
@@ -49,7 +51,7 @@ StepResult ContactStep::solve(Solver &solver, const SolverSettings &settings,
     ops_.forward(u_start_.data()->data(), kDoublesPerVec3);
     targets.u_start = &u_start_;
     targets.restitution = &row_e_;
-    targets.bounce_vmin = bounce_vmin;
+    targets.bounce_vmin = effects.bounce_vmin;
   }
   // Warm start: each row starts from the multiplier its pair had at the last step, if any.
   if (history) history->load(problem_, atom->tag, mu_);
@@ -58,7 +60,7 @@ StepResult ContactStep::solve(Solver &solver, const SolverSettings &settings,
   StepResult result;
   int targeted = 0;    // rows before it have their targets
   for (;;) {
-    if (!restitution.empty()) restitution_of_rows(restitution, targeted);
+    if (restitution) restitution_of_rows(*effects.restitution, targeted);
     targets.apply(problem_, targeted);
     targeted = problem_.n_contacts();
     result.report = solver.solve(problem_, settings, ops_, mu_, u_);    // from the mu so far

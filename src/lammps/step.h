@@ -27,6 +27,16 @@ struct StepResult {
   double clearing_work = 0.0;   // over all processes (residual.h, clearing_work)
 };
 
+// The opt-in effects of a step; each costs nothing when absent.
+struct StepEffects {
+  // e per type pair ((ntypes + 1)^2, keywords.h), empty for none; bounce_vmin: the approach
+  // speed below which contacts stay inelastic.
+  const std::vector<double> *restitution = nullptr;
+  double bounce_vmin = 0.0;
+  // per wall (by wall_index), null when every wall is at rest
+  const std::vector<Vec3> *wall_velocity = nullptr;
+};
+
 class ContactStep : protected LAMMPS_NS::Pointers {
  public:
   ContactStep(LAMMPS_NS::LAMMPS *lmp, int groupbit, DistributedOps &ops,
@@ -34,10 +44,8 @@ class ContactStep : protected LAMMPS_NS::Pointers {
 
   // u^{n+1} from the state at q^n; history (nullptr: no warm start) gives the start values
   // and keeps the result.
-  // restitution: e per type pair ((ntypes + 1)^2, keywords.h), empty for none; bounce_vmin: the
-  // approach speed below which contacts stay inelastic.
   StepResult solve(Solver &solver, const SolverSettings &settings, ContactHistory *history,
-                   const std::vector<double> &restitution, double bounce_vmin);
+                   const StepEffects &effects);
   // Setup: stops with one collective error naming the first atom with a non-finite or
   // non-positive value, or with its centre behind a wall.
   void check_bodies(const std::vector<PlaneWall> &walls) const;

@@ -40,6 +40,13 @@ foreach(_np 1 2 4)
                         NP ${_np} LABELS physics TIMEOUT 300)
 endforeach()
 
+# moving plane walls (positions from variables): a rising floor carries a sphere, a vibrated
+# floor is followed below g and left above, a piston pushes without overlap
+foreach(_np 1 2 4)
+  hardcontact_deck_test(NAME phys_moving_wall_np${_np} SCRIPT integration/test_phys_moving_wall.py
+                        NP ${_np} LABELS physics TIMEOUT 300)
+endforeach()
+
 # the neighbor rebuild look-ahead under acceleration: a falling sphere with a skin 9 x its step
 hardcontact_deck_test(NAME phys_skin_lookahead SCRIPT integration/test_phys_skin_lookahead.py
                       NP 1 LABELS physics TIMEOUT 300)

@@ -175,6 +175,11 @@ CASES = [
     case("wall_null_null", deck("wall zplane NULL NULL"), ["lo and hi cannot both be NULL"]),
     case("wall_lo_equals_hi", deck("wall zplane 3 3"), ["lo (3) must be below hi (3)"]),
     case("wall_lo_above_hi", deck("wall zplane 4 3"), ["lo (4) must be below hi (3)"]),
+    # moving walls
+    case("wall_variable_missing", deck("wall zplane v_nowhere NULL"),
+         ["variable nowhere does not exist"], np4=True),
+    case("wall_variable_atom_style", deck("wall zplane v_za NULL", setup="variable za atom z"),
+         ["variable za is not equal-style"]),
     # restitution and bounce
     case("restitution_above_one", deck("restitution 1.5"), ["restitution must be in [0, 1]"],
          np4=True),

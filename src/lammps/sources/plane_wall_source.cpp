@@ -5,7 +5,13 @@
 #include "atom.h"
 #include "domain.h"
 #include "error.h"
+#include "input.h"
 #include "lammps.h"
+#include "modify.h"
+#include "update.h"
+#include "variable.h"
+
+#include <cmath>
 
 using namespace LAMMPS_NS;
 
@@ -24,6 +30,64 @@ void PlaneWallSource::visit(const Bodies &, RowSink &sink) const
     for (int w = 0; w < nw; ++w)
       sink.offer(i, wall_body(w), walls_[w].normal(), walls_[w].gap(x[i], radius[i]), radius[i]);
   }
+}
+
+double PlaneWallSource::evaluate(int w) const
+{
+  lmp_->modify->clearstep_compute();
+  const double x = lmp_->input->variable->compute_equal(var_index_[w]);
+  lmp_->modify->addstep_compute(lmp_->update->ntimestep + 1);
+  return x;
+}
+
+void PlaneWallSource::init_positions()
+{
+  static const char *names[3] = {"xplane", "yplane", "zplane"};
+  const int nw = static_cast<int>(walls_.size());
+  var_index_.assign(nw, -1);
+  velocity_.assign(nw, Vec3::Zero());
+  any_moving_ = false;
+  for (int w = 0; w < nw; ++w) {
+    if (variables_[w].empty()) continue;
+    const int ivar = lmp_->input->variable->find(variables_[w].c_str());
+    if (ivar < 0)
+      lmp_->error->all(FLERR, "Fix hardcontact wall {}: variable {} does not exist: define it "
+                              "with 'variable {} equal ...' before the run",
+                       names[walls_[w].dim], variables_[w], variables_[w]);
+    if (!lmp_->input->variable->equalstyle(ivar))
+      lmp_->error->all(FLERR, "Fix hardcontact wall {}: variable {} is not equal-style: a wall "
+                              "position is one number ('variable {} equal ...')",
+                       names[walls_[w].dim], variables_[w], variables_[w]);
+    var_index_[w] = ivar;
+    any_moving_ = true;
+    walls_[w].coord = evaluate(w);
+    walls_[w].velocity = 0.0;
+    if (!std::isfinite(walls_[w].coord))
+      lmp_->error->all(FLERR, "Fix hardcontact wall {}: variable {} is not a finite number",
+                       names[walls_[w].dim], variables_[w]);
+  }
+}
+
+const std::vector<Vec3> *PlaneWallSource::advance(double h)
+{
+  if (!any_moving_) return nullptr;
+  const int nw = static_cast<int>(walls_.size());
+  for (int w = 0; w < nw; ++w) {
+    if (var_index_[w] < 0) continue;
+    const double next = evaluate(w);
+    if (!std::isfinite(next))
+      lmp_->error->all(FLERR, "Fix hardcontact: the position of moving wall {} is not a finite "
+                              "number at step {}: check variable {}",
+                       w + 1, lmp_->update->ntimestep, variables_[w]);
+    walls_[w].velocity = (next - walls_[w].coord) / h;
+    velocity_[w] = walls_[w].velocity_vector();
+  }
+  return &velocity_;
+}
+
+void PlaneWallSource::commit(double h)
+{
+  for (PlaneWall &w : walls_) w.coord += h * w.velocity;
 }
 
 void PlaneWallSource::check_in_box() const

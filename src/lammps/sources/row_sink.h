@@ -38,11 +38,17 @@ class RowSink {
     p_.add_contact(i, j, n, d, size, counted);    // D < 0: see Targets
     ++added_;
   }
+  // Moving walls (null: all at rest): their velocities enter both tests like a partner's.
+  void set_wall_velocities(const std::vector<Vec3> *velocity) { wall_velocity_ = velocity; }
   // Rows added since the last begin_*.
   int added() const { return added_; }
 
  private:
-  double free_speed(int b) const { return is_wall(b) ? 0.0 : speed_[b]; }
+  double free_speed(int b) const
+  {
+    if (!is_wall(b)) return speed_[b];
+    return wall_velocity_ ? (*wall_velocity_)[wall_index(b)].norm() : 0.0;
+  }
   bool violated(int i, int j, const Vec3 &n, double d, double size) const;
 
   ContactProblem &p_;
@@ -51,6 +57,7 @@ class RowSink {
   std::vector<double> &speed_;    // |u_free| per body, from begin_candidates
   double scale_ = 1.0;
   const std::vector<Vec3> *u_ = nullptr;    // set in the missed-row pass only
+  const std::vector<Vec3> *wall_velocity_ = nullptr;
   double speed_scale_ = 0.0;
   double tol_ = 0.0;
   int added_ = 0;

@@ -1,0 +1,115 @@
+#!/usr/bin/env python3
+"""Moving plane walls (`wall zplane v_lo v_hi`: a position from an equal-style variable): the
+wall's velocity over each step enters the rows' targets (core/targets.cpp), so a sphere never
+overlaps where the wall will be.
+
+1. Lift: a floor rising at V = 0.5 under g = 1 carries a resting sphere: z = z_floor + r and
+   vz = V at every step (to 1e-9).
+2. Vibrated floor z_f = A sin(2 pi t / T): with A (2 pi / T)^2 < g the sphere follows the floor
+   (|gap| <= 1e-6 at every step); with A (2 pi / T)^2 > g it leaves it (gap > 0.1 at some step)
+   and never overlaps it.
+3. Piston: a ceiling coming down at V onto three spheres resting apart, no gravity: nothing
+   moves until it arrives; then the top sphere moves down with it at V (z = z_c - r), the
+   others stay; never an overlap with the ceiling or between spheres.
+Serially and under mpirun (the rank count ctest gives).
+"""
+
+import math
+
+import numpy as np
+
+import lammps_run as lr
+import physics_common as pc
+
+LIFT = pc.DROP_ON_FLOOR.replace("wall zplane 0 NULL", "wall zplane v_zf NULL").replace(
+    "region          box block -2 2 -2 2 0 10", "region          box block -2 2 -2 2 -1 10")
+
+OUTPUT = """variable        gap equal z[1]-0.5-v_zf
+variable        vz equal vz[1]
+thermo_style    custom step v_zf v_gap v_vz f_hc[1]
+thermo_modify   format float %.15g
+thermo          1"""
+
+PISTON = """
+units           lj
+atom_style      sphere
+dimension       3
+boundary        p p f
+atom_modify     map array
+region          box block -2 2 -2 2 0 10
+create_box      1 box
+create_atoms    1 single 0.0 0.0 0.5
+create_atoms    1 single 0.0 0.0 2.0
+create_atoms    1 single 0.0 0.0 3.5
+set             group all diameter 1.0 density 1.0
+variable        zc equal 5.0-{v}*step*dt
+pair_style      none
+neighbor        0.5 bin
+fix             hc all hardcontact wall zplane 0 v_zc
+timestep        {h}
+variable        z1 equal z[1]
+variable        z2 equal z[2]
+variable        z3 equal z[3]
+variable        vz3 equal vz[3]
+thermo_style    custom step v_zc v_z1 v_z2 v_z3 v_vz3
+thermo_modify   format float %.15g
+thermo          1
+run             {n}
+"""
+
+
+def test():
+    args = lr.test_args(__doc__)
+
+    # 1. lift
+    V = 0.5
+    deck = "variable        zf equal %r*step*dt\n" % V + LIFT.format(
+        x=0.0, y=0.0, z=0.5, fix_extra="", h=0.01, n=200, output=OUTPUT)
+    res = lr.run_deck(args.lmp, deck, args.np, args.workdir + "/lift", timeout=args.timeout)
+    th = res.thermo[-1]
+    gap, vz = th["v_gap"], th["v_vz"]
+    lr.check(float(np.abs(gap).max()) <= 1e-9, "lift: the sphere stays on the rising floor (|gap| "
+             "<= %.3g)" % float(np.abs(gap).max()))
+    lr.check(float(np.abs(vz[1:] - V).max()) <= 1e-9, "lift: and moves with it at V = %g" % V)
+
+    # 2. vibrated floor
+    T = 1.0
+    for A, follows in ((0.02, True), (0.1, False)):
+        accel = A * (2 * math.pi / T) ** 2
+        deck = "variable        zf equal %r*sin(2*PI*step*dt/%r)\n" % (A, T) + LIFT.format(
+            x=0.0, y=0.0, z=0.5, fix_extra="", h=0.001, n=3000, output=OUTPUT)
+        res = lr.run_deck(args.lmp, deck, args.np, "%s/vibrated_%g" % (args.workdir, A),
+                          timeout=args.timeout)
+        gap = res.thermo[-1]["v_gap"]
+        lr.check(float(gap.min()) >= -1e-6, "vibrated floor A w^2 = %.3g g: never an overlap "
+                 "(%.3g)" % (accel, float(gap.min())))
+        if follows:
+            lr.check(float(np.abs(gap).max()) <= 1e-6, "vibrated floor A w^2 = %.3g g < g: the "
+                     "sphere follows it (|gap| <= %.3g)" % (accel, float(np.abs(gap).max())))
+        else:
+            lr.check(float(gap.max()) > 0.1, "vibrated floor A w^2 = %.3g g > g: the sphere "
+                     "leaves it (largest gap %.3g)" % (accel, float(gap.max())))
+
+    # 3. piston, stopped before the column jams (ceiling at 3.2 > 3 diameters)
+    v, h = 0.5, 0.01
+    n = int(round((5.0 - 3.2) / (v * h)))
+    res = lr.run_deck(args.lmp, PISTON.format(v=v, h=h, n=n), args.np, args.workdir + "/piston",
+                      timeout=args.timeout)
+    th = res.thermo[-1]
+    zc, z1, z2, z3, vz3 = (th[k] for k in ("v_zc", "v_z1", "v_z2", "v_z3", "v_vz3"))
+    size_tol = 1e-4 * 1.0
+    lr.check(float((z3 + 0.5 - zc).max()) <= size_tol, "piston: the top sphere never overlaps "
+             "the ceiling (%.3g)" % float((z3 + 0.5 - zc).max()))
+    lr.check(float((z2 + 1.0 - z3).max()) <= size_tol and float((z1 + 1.0 - z2).max()) <= size_tol,
+             "piston: no overlap between the spheres")
+    before = zc >= 4.0
+    lr.check(bool(np.all(z3[before] == 3.5)), "piston: nothing moves before the ceiling arrives")
+    pushed = zc <= 3.9
+    lr.check(float(np.abs(z3[pushed] - (zc[pushed] - 0.5)).max()) <= 1e-4,
+             "piston: then the top sphere moves with the ceiling (z3 = z_c - r within 1e-4)")
+    lr.check(float(np.abs(vz3[pushed] + v).max()) <= 1e-3, "piston: at the ceiling's speed %g" % v)
+    lr.check(bool(np.all(z1 == 0.5)), "piston: the bottom sphere never moves")
+
+
+if __name__ == "__main__":
+    lr.main(test)
