@@ -36,7 +36,8 @@ const int HISTORY_VALUES = hardcontact::NormalLaw::block;    // per contact: the
 FixHardContact::FixHardContact(LAMMPS *lmp, int narg, char **arg) :
     Fix(lmp, narg, arg), options_(checked_options(lmp, narg, arg)),
     solver_(hardcontact::make_solver(options_.solver_name)), reach_(lmp), pairs_(lmp, groupbit),
-    walls_(lmp, groupbit, std::move(options_.walls), std::move(options_.wall_variables)), history_(memory, HISTORY_VALUES),
+    walls_(lmp, groupbit, std::move(options_.walls), std::move(options_.wall_variables)),
+    history_(memory, HISTORY_VALUES),
     step_(lmp, groupbit, ops_, reach_, {&pairs_, &walls_}), integrate_(lmp, groupbit),
     outputs_(lmp, this)
 {
