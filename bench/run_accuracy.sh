@@ -13,19 +13,7 @@
 # BENCH_WORKDIR (scratch, default bench/work: data files, logs, dumps; not committed),
 # BENCH_WAIT_LOAD=N: wait up to N seconds for the 1-minute load average to drop below 1.
 set -euo pipefail
-ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
-PY=/usr/bin/python3
-MODE=full
-QUICK=()
-if [ "${1:-}" = "--quick" ]; then MODE=quick; QUICK=(--quick); shift; fi
-[ $# -eq 0 ] || { echo "usage: $0 [--quick]" >&2; exit 2; }
-LMP="${HARDCONTACT_LMP:-$ROOT/build/lmp_hardcontact}"
-SOFT_LMP="${SOFT_LMP:-/usr/bin/lmp}"
-[ -x "$LMP" ] || { echo "no $LMP: build first (bash .ci/build.sh) or set HARDCONTACT_LMP" >&2; exit 1; }
-[ -x "$SOFT_LMP" ] || { echo "no $SOFT_LMP (Debian package lammps): set SOFT_LMP" >&2; exit 1; }
-WORK="${BENCH_WORKDIR:-$ROOT/bench/work}/$MODE"
-RESULTS="$ROOT/bench/results"
-mkdir -p "$WORK" "$RESULTS"
+source "$(dirname "${BASH_SOURCE[0]}")/common.sh" "" "$@"
 
 load1() { cut -d' ' -f1 /proc/loadavg; }
 if [ -n "${BENCH_WAIT_LOAD:-}" ]; then

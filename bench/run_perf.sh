@@ -15,19 +15,7 @@
 # bench/work: data files, logs, restarts; not committed), PERF_ONLY (subset of
 # heights,tray,throughput,tts).
 set -euo pipefail
-ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
-PY=/usr/bin/python3
-MODE=full
-QUICK=()
-if [ "${1:-}" = "--quick" ]; then MODE=quick; QUICK=(--quick); shift; fi
-[ $# -eq 0 ] || { echo "usage: $0 [--quick]" >&2; exit 2; }
-LMP="${HARDCONTACT_LMP:-$ROOT/build/lmp_hardcontact}"
-SOFT_LMP="${SOFT_LMP:-/usr/bin/lmp}"
-[ -x "$LMP" ] || { echo "no $LMP: build first (bash .ci/build.sh) or set HARDCONTACT_LMP" >&2; exit 1; }
-[ -x "$SOFT_LMP" ] || { echo "no $SOFT_LMP (Debian package lammps): set SOFT_LMP" >&2; exit 1; }
-WORK="${BENCH_WORKDIR:-$ROOT/bench/work}/perf-$MODE"
-RESULTS="$ROOT/bench/results"
-mkdir -p "$WORK" "$RESULTS"
+source "$(dirname "${BASH_SOURCE[0]}")/common.sh" "perf-" "$@"
 
 # what the launcher was built from: HARDCONTACT_SOURCE_DESC, else this tree's commit
 GIT="${HARDCONTACT_SOURCE_DESC:-}"

@@ -65,6 +65,19 @@ class Report:
         f = self.find(**kw)
         return f[0] if f else None
 
+    def save(self, fig, ax, xlabel, ylabel, title, name, legend=7, loglog=False):
+        """Axes, labels, legend and the PNG under doc/figures/."""
+        if loglog:
+            ax.set_xscale("log")
+            ax.set_yscale("log")
+        ax.set_xlabel(xlabel)
+        ax.set_ylabel(ylabel)
+        ax.set_title(title)
+        ax.legend(fontsize=legend)
+        fig.tight_layout()
+        fig.savefig(str(self.figures / name), dpi=110)
+        plt.close(fig)
+
     def w(self, *text):
         self.lines.extend(text)
 
@@ -236,15 +249,7 @@ class Report:
                         fmt(r["ms_per_step"]), "%.0f" % (100 * num(r["modify_s"]) / max(num(r["loop_s"]), 1e-12))])
         ax.axhline(1.5e8, color="k", lw=0.8, ls=":")
         ax.text(min(num(r["n"]) for r in rows), 1.6e8, "target 1.5e8 (20-layer pile)", fontsize=7)
-        ax.set_xscale("log")
-        ax.set_yscale("log")
-        ax.set_xlabel("spheres N")
-        ax.set_ylabel("contact-iterations per second of the fix")
-        ax.set_title("Throughput, one rank (iterations x rows / Modify time)")
-        ax.legend(fontsize=7)
-        fig.tight_layout()
-        fig.savefig(str(self.figures / "perf_throughput.png"), dpi=110)
-        plt.close(fig)
+        self.save(fig, ax, "spheres N", "contact-iterations per second of the fix", "Throughput, one rank (iterations x rows / Modify time)", "perf_throughput.png", legend=7, loglog=True)
         self.w("## 3. Throughput: contact-iterations per second", "",
                "Contact-iterations per second = sum over the steps of (rows x iterations) / the `Modify` time "
                "of LAMMPS's timing breakdown (the fix's whole step: candidates, solve, update; the loop "
@@ -311,15 +316,7 @@ class Report:
             if ref and s1:
                 self.at1e3[pile] = (num(s1["projected_s"]), num(ref["loop_s"]), num(s1["overlap_max"]), num(s1["overlap_rest"]),
                                     ref["n"])
-        ax.set_xscale("log")
-        ax.set_yscale("log")
-        ax.set_xlabel("largest overlap during the settle / contact size")
-        ax.set_ylabel("wall time of the settle (s)")
-        ax.set_title("Time to solution: hard vs soft (same simulated time)")
-        ax.legend(fontsize=6)
-        fig.tight_layout()
-        fig.savefig(str(self.figures / "perf_hard_vs_soft.png"), dpi=110)
-        plt.close(fig)
+        self.save(fig, ax, "largest overlap during the settle / contact size", "wall time of the settle (s)", "Time to solution: hard vs soft (same simulated time)", "perf_hard_vs_soft.png", legend=6, loglog=True)
         self.w("## 4. Time to solution: hard against soft spheres", "",
                "The same data file and the same simulated time (the settle of section 1: 200 + 20 x layers "
                "steps of 0.02) with the soft-sphere twin: `pair_style gran/hertz/history` frictionless "
