@@ -37,8 +37,9 @@ FixHardContact::FixHardContact(LAMMPS *lmp, int narg, char **arg) :
     Fix(lmp, narg, arg), options_(checked_options(lmp, narg, arg)),
     solver_(hardcontact::make_solver(options_.solver_name)), reach_(lmp), pairs_(lmp, groupbit),
     walls_(lmp, groupbit, std::move(options_.walls), std::move(options_.wall_variables)),
+    regions_(lmp, groupbit, std::move(options_.wall_regions)), obstacles_(walls_, regions_),
     history_(memory, HISTORY_VALUES),
-    step_(lmp, groupbit, ops_, reach_, {&pairs_, &walls_}), integrate_(lmp, groupbit),
+    step_(lmp, groupbit, ops_, reach_, {&pairs_, &walls_, &regions_}), integrate_(lmp, groupbit),
     outputs_(lmp, this)
 {
   walls_.check_in_box();
@@ -95,6 +96,7 @@ void FixHardContact::init()
     error->all(FLERR, "Fix hardcontact does not support run_style respa: use verlet");
   walls_.init_positions();
   walls_.check_in_box();
+  regions_.init(static_cast<int>(walls_.walls().size()));
   if (!solver_->traits().distributed && comm->nprocs > 1)
     error->all(FLERR, "Fix hardcontact solver {} runs on one processor only (it assembles "
                       "the whole contact operator): use apgd, pgs or uzawa with mpirun",
@@ -123,8 +125,9 @@ void FixHardContact::setup(int)
 {
   walls_.init_positions();    // moving walls where their variables put them at this step
   step_.check_bodies(walls_.walls());
+  regions_.check_sides();
   step_.find_overlaps(*solver_);
-  outputs_.start_of_run(step_.problem(), walls_.walls(), options_.settings.tol);
+  outputs_.start_of_run(step_.problem(), obstacles_, options_.settings.tol);
   step_.clear();
 }
 
@@ -139,7 +142,7 @@ void FixHardContact::initial_integrate(int)
       step_.solve(*solver_, options_.settings, options_.warmstart ? &history_ : nullptr, effects);
   walls_.commit(update->dt);    // the outputs measure q^{n+1} against the walls at t^{n+1}
   if (options_.warmstart) history_resized();
-  outputs_.record_step(result, step_.problem(), step_.mu(), step_.u(), walls_.walls(),
+  outputs_.record_step(result, step_.problem(), step_.mu(), step_.u(), obstacles_,
                        options_.settings);
   if (integrate_.move(step_.u())) next_reneighbor = update->ntimestep;
 }

@@ -12,7 +12,9 @@
 #include "neighbor_reach.h"
 #include "outputs.h"
 #include "sources/pair_source.h"
+#include "sources/obstacles.h"
 #include "sources/plane_wall_source.h"
+#include "sources/region_wall_source.h"
 #include "step.h"
 
 #include <memory>
@@ -54,6 +56,8 @@ class FixHardContact : public Fix {
   hardcontact::NeighborReach reach_;
   hardcontact::PairSource pairs_;
   hardcontact::PlaneWallSource walls_;
+  hardcontact::RegionWallSource regions_;    // after walls_: wall indices follow the planes'
+  hardcontact::Obstacles obstacles_;
   hardcontact::ContactHistory history_;
   hardcontact::ContactStep step_;
   hardcontact::Integrate integrate_;

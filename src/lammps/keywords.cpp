@@ -88,16 +88,25 @@ void parse_warmstart(LAMMPS *lmp, char **values, int, FixOptions &o)
   o.warmstart = value == "yes";
 }
 
-void parse_wall(LAMMPS *lmp, char **values, int, FixOptions &o)
+void parse_wall(LAMMPS *lmp, char **values, int n, FixOptions &o)
 {
   const std::string plane = values[0];
+  if (plane == "region") {
+    if (n != 2)
+      lmp->error->all(FLERR, "Fix hardcontact wall region takes one value, the region ID");
+    o.wall_regions.emplace_back(values[1]);
+    return;
+  }
+  if (n != 3)
+    lmp->error->all(FLERR, "Fix hardcontact wall needs 3 value(s) after it (wall {} lo hi)",
+                    plane);
   int dim = -1;
   if (plane == "xplane") dim = 0;
   else if (plane == "yplane") dim = 1;
   else if (plane == "zplane") dim = 2;
   else
-    lmp->error->all(FLERR, "Fix hardcontact wall '{}' is unknown: use xplane, yplane or zplane",
-                    plane);
+    lmp->error->all(FLERR, "Fix hardcontact wall '{}' is unknown: use xplane, yplane, zplane or "
+                           "region", plane);
   if (dim == 2 && lmp->domain->dimension == 2)
     lmp->error->all(FLERR, "Fix hardcontact wall zplane is not allowed in a 2d simulation");
   const bool has_lo = strcmp(values[1], "NULL") != 0;
@@ -159,8 +168,9 @@ const Keyword keywords[] = {
     {"maxiter", 1, 0, parse_maxiter, "maxiter N: at most N solver iterations per solve"},
     {"rho", 1, 0, parse_rho, "rho value: fixed solver step (omit: automatic)"},
     {"warmstart", 1, 0, parse_warmstart, "warmstart yes/no: start from the last step's forces"},
-    {"wall", 3, 0, parse_wall,
-     "wall xplane|yplane|zplane lo hi: flat walls, NULL for none, v_name for a moving one"},
+    {"wall", 2, 1, parse_wall,
+     "wall xplane|yplane|zplane lo hi: flat walls, NULL for none, v_name for a moving one; "
+     "wall region ID: the surface of a region"},
     {"restitution", 1, 2, parse_restitution,
      "restitution e [I J]: Newton's restitution e in [0, 1] for type pairs I J (all: default)"},
     {"bounce", 1, 0, parse_bounce, "bounce vmin: contacts closing slower stay inelastic"},
@@ -197,8 +207,8 @@ FixOptions parse_keywords(LAMMPS *lmp, int narg, char **arg, int first)
       lmp->error->all(FLERR, "Fix hardcontact keyword '{}' is unknown: use {}", arg[iarg],
                       keyword_list());
     if (iarg + found->nvalues >= narg)
-      lmp->error->all(FLERR, "Fix hardcontact {} needs {} value(s) after it", found->name,
-                      found->nvalues);
+      lmp->error->all(FLERR, "Fix hardcontact {} needs {} value(s) after it ({})", found->name,
+                      found->nvalues, found->doc);
     int n = found->nvalues;
     // optional values: present when the next word is not a keyword name
     if (found->optional > 0 && iarg + n + 1 < narg && !is_keyword(arg[iarg + n + 1])) {

@@ -20,6 +20,7 @@ struct FixOptions {
   SolverSettings settings;
   std::vector<PlaneWall> walls;
   std::vector<std::string> wall_variables;    // per wall: equal-style variable name, or ""
+  std::vector<std::string> wall_regions;      // IDs of regions whose surfaces are walls
   bool warmstart = true;
   // restitution e per type pair, (ntypes + 1)^2 row-major; empty: inelastic (the paper)
   std::vector<double> restitution;

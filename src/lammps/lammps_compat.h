@@ -4,9 +4,13 @@
 #pragma once
 
 #include "comm.h"
+#include "domain.h"
 #include "fix.h"
+#include "region.h"
 #include "neigh_request.h"
 #include "neighbor.h"
+
+#include <string>
 
 namespace hardcontact {
 namespace compat {
@@ -45,6 +49,17 @@ inline double ghost_cutoff_for_request(double cutoff, double skin)
 #else
   (void) skin;
   return cutoff;
+#endif
+}
+
+// The region with this ID, or nullptr (modern: Domain::get_region_by_id; old: an index).
+inline LAMMPS_NS::Region *find_region(LAMMPS_NS::Domain *domain, const std::string &id)
+{
+#if HARDCONTACT_MODERN_API
+  return domain->get_region_by_id(id);
+#else
+  const int i = domain->find_region(id);
+  return i < 0 ? nullptr : domain->regions[i];
 #endif
 }
 

@@ -40,7 +40,7 @@ void Outputs::clear_per_atom(int i)
   for (int k = 0; k < kPerAtomColumns; ++k) fix_->array_atom[i][k] = 0.0;
 }
 
-void Outputs::start_of_run(const ContactProblem &p, const std::vector<PlaneWall> &walls,
+void Outputs::start_of_run(const ContactProblem &p, const WallGaps &walls,
                            double tol)
 {
   overlap_diagnostics(p, nullptr, 0.0, walls);
@@ -59,7 +59,7 @@ void Outputs::start_of_run(const ContactProblem &p, const std::vector<PlaneWall>
 
 void Outputs::record_step(const StepResult &r, const ContactProblem &p,
                           const std::vector<double> &mu, const std::vector<Vec3> &u,
-                          const std::vector<PlaneWall> &walls, const SolverSettings &settings)
+                          const WallGaps &walls, const SolverSettings &settings)
 {
   record_solve(r, settings);
   per_atom_and_local(p, mu);
@@ -151,7 +151,7 @@ void Outputs::per_atom_and_local(const ContactProblem &p, const std::vector<doub
 // relative to the contact size. Other listed pairs satisfy eq. 15 (the missed-row check), and
 // D >= linearised gap (D is convex), so they cannot overlap beyond the tolerance either.
 void Outputs::overlap_diagnostics(const ContactProblem &p, const std::vector<Vec3> *u, double h,
-                                  const std::vector<PlaneWall> &walls)
+                                  const WallGaps &walls)
 {
   double **x = atom->x;
   double *radius = atom->radius;
@@ -167,7 +167,7 @@ void Outputs::overlap_diagnostics(const ContactProblem &p, const std::vector<Vec
       if (h > 0.0) xj += h * (*u)[j];
       d = (xj - xi).norm() - radius[i] - radius[j];
     } else {
-      d = walls[wall_index(j)].gap(xi.data(), radius[i]);
+      d = walls.wall_gap(wall_index(j), xi, radius[i]);
     }
     if (d < 0.0) {
       worst[0] = MAX(worst[0], -d);

@@ -3,6 +3,8 @@
 // (one row per active contact).
 #pragma once
 
+#include "sources/contact_source.h"
+
 #include "step.h"
 
 #include "../core/plane_wall.h"
@@ -37,17 +39,17 @@ class Outputs : protected LAMMPS_NS::Pointers {
   void clear_per_atom(int i);
 
   // Setup: the overlaps the run starts from (a warning beyond tol), every other figure 0.
-  void start_of_run(const ContactProblem &p, const std::vector<PlaneWall> &walls, double tol);
+  void start_of_run(const ContactProblem &p, const WallGaps &walls, double tol);
   // After the solve of a step, before the atoms move: all outputs of the step.
   void record_step(const StepResult &r, const ContactProblem &p, const std::vector<double> &mu,
-                   const std::vector<Vec3> &u, const std::vector<PlaneWall> &walls,
+                   const std::vector<Vec3> &u, const WallGaps &walls,
                    const SolverSettings &settings);
   void end_of_run(const SolverSettings &settings);
 
  private:
   void record_solve(const StepResult &r, const SolverSettings &settings);
   void overlap_diagnostics(const ContactProblem &p, const std::vector<Vec3> *u, double h,
-                           const std::vector<PlaneWall> &walls);
+                           const WallGaps &walls);
   void per_atom_and_local(const ContactProblem &p, const std::vector<double> &mu);
 
   LAMMPS_NS::Fix *fix_;

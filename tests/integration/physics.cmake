@@ -47,6 +47,13 @@ foreach(_np 1 2 4)
                         NP ${_np} LABELS physics TIMEOUT 300)
 endforeach()
 
+# walls made of regions: cylinder, cone (hopper), spherical bowl (inside), spherical obstacle
+# (outside): no overlap beyond the documented bounds, resting heights from geometry
+foreach(_np 1 2 4)
+  hardcontact_deck_test(NAME phys_region_wall_np${_np} SCRIPT integration/test_phys_region_wall.py
+                        NP ${_np} LABELS physics TIMEOUT 300)
+endforeach()
+
 # the neighbor rebuild look-ahead under acceleration: a falling sphere with a skin 9 x its step
 hardcontact_deck_test(NAME phys_skin_lookahead SCRIPT integration/test_phys_skin_lookahead.py
                       NP 1 LABELS physics TIMEOUT 300)

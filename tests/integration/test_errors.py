@@ -171,7 +171,7 @@ CASES = [
     case("warmstart_without_value", deck("warmstart"), ["warmstart needs 1 value"]),
     # walls
     case("wall_qplane", deck("wall qplane 0 1"),
-         ["wall 'qplane' is unknown", "use xplane, yplane or zplane"]),
+         ["wall 'qplane' is unknown", "use xplane, yplane, zplane or region"]),
     case("wall_null_null", deck("wall zplane NULL NULL"), ["lo and hi cannot both be NULL"]),
     case("wall_lo_equals_hi", deck("wall zplane 3 3"), ["lo (3) must be below hi (3)"]),
     case("wall_lo_above_hi", deck("wall zplane 4 3"), ["lo (4) must be below hi (3)"]),
@@ -180,6 +180,16 @@ CASES = [
          ["variable nowhere does not exist"], np4=True),
     case("wall_variable_atom_style", deck("wall zplane v_za NULL", setup="variable za atom z"),
          ["variable za is not equal-style"]),
+    # region walls
+    case("wall_region_unknown", deck("wall region nowhere"),
+         ["wall region nowhere", "no region with that ID"], np4=True),
+    case("wall_region_no_id", deck("wall region"), ["wall needs 2 value", "wall region ID"]),
+    case("wall_region_atom_outside", deck("wall region small",
+         setup="region small sphere 1.5 1.5 1.5 1.0 side in"),
+         ["on the wrong side of wall region small"]),
+    case("wall_region_moving", deck("wall region mover",
+         setup="variable dx equal 0.01*step\nregion mover block 0 6 0 6 0 6 move v_dx NULL NULL"),
+         ["wall region mover", "moving or variable-shape regions are not supported"]),
     # restitution and bounce
     case("restitution_above_one", deck("restitution 1.5"), ["restitution must be in [0, 1]"],
          np4=True),

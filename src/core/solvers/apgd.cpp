@@ -54,7 +54,8 @@ double ApgdSolver<Law>::set_residual(const std::vector<double> &mu, const std::v
     return residual_;
   }
   double r = 0.0;
-  for (const int c : this->set_.rows()) r = std::max(r, this->set_.violation(c, this->g_[c], mu[c]));
+  for (const int c : this->set_.rows())
+    r = std::max(r, this->set_.violation(c, this->g_[c], mu[c]));
   return r;
 }
 

@@ -77,7 +77,8 @@ SolveReport Exact::solve(const ContactProblem &p, const SolverSettings &s, Distr
         t.emplace_back(a, a, reg);
         for (SparseMatrix::InnerIterator it(A, P[a]); it; ++it) {
           const auto pos = std::lower_bound(P.begin(), P.end(), static_cast<int>(it.row()));
-          if (pos != P.end() && *pos == it.row()) t.emplace_back(static_cast<int>(pos - P.begin()), a, it.value());
+          if (pos != P.end() && *pos == it.row())
+            t.emplace_back(static_cast<int>(pos - P.begin()), a, it.value());
         }
       }
       SparseMatrix App(np, np);

@@ -18,6 +18,14 @@ struct Bodies {
   double recovery_speed;               // largest |h f / m| of the step (overlap policy)
 };
 
+// The gap of a sphere (centre x, radius) to wall w (wall_index of a row), for the overlap
+// diagnostics: each obstacle source answers for its own walls.
+class WallGaps {
+ public:
+  virtual ~WallGaps() = default;
+  virtual double wall_gap(int w, const Vec3 &x, double radius) const = 0;
+};
+
 class ContactSource {
  public:
   virtual ~ContactSource() = default;

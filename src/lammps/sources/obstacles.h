@@ -1,0 +1,27 @@
+// The wall sources of the fix as one WallGaps: plane walls hold wall indices 0..P-1 (in the
+// order of the fix command), region walls P.. (region_wall_source.h).
+#pragma once
+
+#include "plane_wall_source.h"
+#include "region_wall_source.h"
+
+namespace hardcontact {
+
+class Obstacles : public WallGaps {
+ public:
+  Obstacles(const PlaneWallSource &planes, const RegionWallSource &regions) :
+      planes_(planes), regions_(regions)
+  {
+  }
+  double wall_gap(int w, const Vec3 &x, double radius) const override
+  {
+    if (regions_.owns(w)) return regions_.gap(w, x, radius);
+    return planes_.walls()[w].gap(x.data(), radius);
+  }
+
+ private:
+  const PlaneWallSource &planes_;
+  const RegionWallSource &regions_;
+};
+
+}    // namespace hardcontact

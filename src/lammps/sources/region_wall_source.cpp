@@ -1,0 +1,99 @@
+#include "region_wall_source.h"
+
+#include "row_sink.h"
+
+#include "../lammps_compat.h"
+
+#include "atom.h"
+#include "domain.h"
+#include "error.h"
+#include "lammps.h"
+#include "neighbor.h"
+#include "region.h"
+
+#include <limits>
+
+using namespace LAMMPS_NS;
+
+namespace hardcontact {
+
+void RegionWallSource::init(int first_wall)
+{
+  first_wall_ = first_wall;
+  regions_.clear();
+  for (const std::string &id : ids_) {
+    Region *region = compat::find_region(lmp_->domain, id);
+    if (region == nullptr)
+      lmp_->error->all(FLERR, "Fix hardcontact wall region {}: no region with that ID: define it "
+                              "with the region command before the fix", id);
+    if (region->dynamic_check())
+      lmp_->error->all(FLERR, "Fix hardcontact wall region {}: moving or variable-shape regions "
+                              "are not supported yet: use a static region, or a moving plane "
+                              "wall (wall zplane v_name ...)", id);
+    regions_.push_back(region);
+  }
+}
+
+// Every face of every region within the skin of an owned sphere: a sphere cannot move more
+// than the skin in a step (the fix's skin check), so no face it could reach is left out.
+void RegionWallSource::visit(const Bodies &, RowSink &sink) const
+{
+  const Atom *atom = lmp_->atom;
+  double **x = atom->x;
+  const double *radius = atom->radius;
+  const int *mask = atom->mask;
+  const double skin = lmp_->neighbor->skin;
+  const int nr = static_cast<int>(regions_.size());
+  for (int k = 0; k < nr; ++k) {
+    Region *region = regions_[k];
+    for (int i = 0; i < atom->nlocal; ++i) {
+      if (!(mask[i] & groupbit_)) continue;
+      const int n = region->surface(x[i][0], x[i][1], x[i][2], radius[i] + skin);
+      for (int m = 0; m < n; ++m) {
+        const auto &ct = region->contact[m];
+        if (!(ct.r > 0.0)) continue;    // centre on the surface: no direction (check_sides)
+        // delx.. points from the surface to the centre: the row's normal is the opposite
+        const Vec3 normal = -Vec3(ct.delx, ct.dely, ct.delz) / ct.r;
+        const int w = first_wall_ + kFacesPerRegion * k + ct.iwall;
+        sink.offer(i, wall_body(w), normal, ct.r - radius[i], radius[i]);
+      }
+    }
+  }
+}
+
+void RegionWallSource::check_sides() const
+{
+  const Atom *atom = lmp_->atom;
+  tagint bad = 0;
+  int which = -1;
+  for (int k = 0; k < static_cast<int>(regions_.size()); ++k)
+    for (int i = 0; i < atom->nlocal && !bad; ++i)
+      if ((atom->mask[i] & groupbit_) &&
+          !regions_[k]->match(atom->x[i][0], atom->x[i][1], atom->x[i][2])) {
+        bad = atom->tag[i];
+        which = k;
+      }
+  tagint all;
+  MPI_Allreduce(&bad, &all, 1, MPI_LMP_TAGINT, MPI_MAX, lmp_->world);
+  int which_all;
+  MPI_Allreduce(&which, &which_all, 1, MPI_INT, MPI_MAX, lmp_->world);
+  if (all)
+    lmp_->error->all(FLERR, "Fix hardcontact: the centre of atom {} is on the wrong side of wall "
+                            "region {} (outside a 'side in' region, inside a 'side out' one): "
+                            "move the atom or change the region", all, ids_[which_all]);
+}
+
+double RegionWallSource::gap(int w, const Vec3 &x, double radius) const
+{
+  const int k = (w - first_wall_) / kFacesPerRegion;
+  const int iwall = (w - first_wall_) % kFacesPerRegion;
+  Region *region = regions_[k];
+  // the centre crossed the surface: an overlap of at least the radius
+  if (!region->match(x[0], x[1], x[2])) return -radius;
+  const int n = region->surface(x[0], x[1], x[2], radius + lmp_->neighbor->skin);
+  for (int m = 0; m < n; ++m)
+    if (region->contact[m].iwall == iwall) return region->contact[m].r - radius;
+  return std::numeric_limits<double>::infinity();    // that face is farther than the skin
+}
+
+}    // namespace hardcontact
