@@ -29,3 +29,6 @@ hardcontact_deck_test(NAME example_hopper SCRIPT integration/test_example_hopper
 # cluster_impact (the flagship, paper 6.3): 6 steps of the 2000-disc impact at h = 0.1
 hardcontact_deck_test(NAME example_cluster_impact SCRIPT integration/test_example_cluster_impact.py
                       NP 1 LABELS examples TIMEOUT 300)
+
+hardcontact_deck_test(NAME example_bouncing_ball SCRIPT integration/test_example_bouncing_ball.py
+                      NP 1 LABELS examples TIMEOUT 120)

@@ -51,6 +51,10 @@ void RegionWallSource::visit(const Bodies &, RowSink &sink) const
       const int n = region->surface(x[i][0], x[i][1], x[i][2], radius[i] + skin);
       for (int m = 0; m < n; ++m) {
         const auto &ct = region->contact[m];
+        if (ct.iwall >= kFacesPerRegion)
+          lmp_->error->one(FLERR, "Fix hardcontact wall region {}: face {} beyond the {} faces a "
+                                  "region may have here: split the region into several wall "
+                                  "region keywords", ids_[k], ct.iwall, kFacesPerRegion);
         if (!(ct.r > 0.0)) continue;    // centre on the surface: no direction (check_sides)
         // delx.. points from the surface to the centre: the row's normal is the opposite
         const Vec3 normal = -Vec3(ct.delx, ct.dely, ct.delz) / ct.r;
