@@ -138,6 +138,7 @@ void FixHardContact::initial_integrate(int)
   effects.restitution = &options_.restitution;
   effects.bounce_vmin = options_.bounce_vmin;
   effects.wall_velocity = walls_.advance(update->dt);
+  effects.cohesion = &options_.cohesion;
   const hardcontact::StepResult result =
       step_.solve(*solver_, options_.settings, options_.warmstart ? &history_ : nullptr, effects);
   walls_.commit(update->dt);    // the outputs measure q^{n+1} against the walls at t^{n+1}

@@ -133,25 +133,40 @@ void parse_wall(LAMMPS *lmp, char **values, int n, FixOptions &o)
   }
 }
 
-// e for the type pairs I, J (LAMMPS type ranges, default every pair); later lines win.
-void parse_restitution(LAMMPS *lmp, char **values, int n, FixOptions &o)
+// A value per type pair (I, J LAMMPS type ranges, default every pair; later lines win) into a
+// (ntypes + 1)^2 table.
+void set_pair_values(LAMMPS *lmp, char **values, int n, double value, std::vector<double> &table)
 {
-  const double e = number(lmp, "restitution", values[0]);
-  if (e < 0.0 || e > 1.0)
-    lmp->error->all(FLERR, "Fix hardcontact restitution must be in [0, 1] (0: inelastic, the "
-                           "paper's scheme; 1: elastic), got {}", values[0]);
   const int ntypes = lmp->atom->ntypes;
   int ilo = 1, ihi = ntypes, jlo = 1, jhi = ntypes;
   if (n == 3) {
     utils::bounds(FLERR, values[1], 1, ntypes, ilo, ihi, lmp->error);
     utils::bounds(FLERR, values[2], 1, ntypes, jlo, jhi, lmp->error);
   }
-  o.restitution.resize((ntypes + 1) * (ntypes + 1), 0.0);
+  table.resize((ntypes + 1) * (ntypes + 1), 0.0);
   for (int i = ilo; i <= ihi; ++i)
     for (int j = jlo; j <= jhi; ++j) {
-      o.restitution[i * (ntypes + 1) + j] = e;
-      o.restitution[j * (ntypes + 1) + i] = e;
+      table[i * (ntypes + 1) + j] = value;
+      table[j * (ntypes + 1) + i] = value;
     }
+}
+
+void parse_restitution(LAMMPS *lmp, char **values, int n, FixOptions &o)
+{
+  const double e = number(lmp, "restitution", values[0]);
+  if (e < 0.0 || e > 1.0)
+    lmp->error->all(FLERR, "Fix hardcontact restitution must be in [0, 1] (0: inelastic, the "
+                           "paper's scheme; 1: elastic), got {}", values[0]);
+  set_pair_values(lmp, values, n, e, o.restitution);
+}
+
+void parse_cohesion(LAMMPS *lmp, char **values, int n, FixOptions &o)
+{
+  const double f = number(lmp, "cohesion", values[0]);
+  if (f < 0.0)
+    lmp->error->all(FLERR, "Fix hardcontact cohesion must be a force >= 0 (the pull a touching "
+                           "contact holds before it opens), got {}", values[0]);
+  set_pair_values(lmp, values, n, f, o.cohesion);
 }
 
 void parse_bounce(LAMMPS *lmp, char **values, int, FixOptions &o)
@@ -174,6 +189,9 @@ const Keyword keywords[] = {
     {"restitution", 1, 2, parse_restitution,
      "restitution e [I J]: Newton's restitution e in [0, 1] for type pairs I J (all: default)"},
     {"bounce", 1, 0, parse_bounce, "bounce vmin: contacts closing slower stay inelastic"},
+    {"cohesion", 1, 2, parse_cohesion,
+     "cohesion F [I J]: a touching contact holds up to F of pull, for type pairs I J (all: "
+     "default)"},
 };
 
 bool is_keyword(const char *word)

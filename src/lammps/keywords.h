@@ -25,6 +25,8 @@ struct FixOptions {
   // restitution e per type pair, (ntypes + 1)^2 row-major; empty: inelastic (the paper)
   std::vector<double> restitution;
   double bounce_vmin = 0.0;
+  // cohesion F per type pair, (ntypes + 1)^2 row-major; empty: none
+  std::vector<double> cohesion;
 };
 
 // Parses arg[first..narg-1]; stops with an error that names the keyword and what to write.

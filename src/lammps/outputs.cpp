@@ -115,7 +115,7 @@ void Outputs::per_atom_and_local(const ContactProblem &p, const std::vector<doub
     const int i = p.body_i[c], j = p.body_j[c];
     const bool here = p.counted[c] != 0;
     if (here) counts[0] += 1.0;
-    if (mu[c] <= 0.0) continue;
+    if (mu[c] == 0.0) continue;    // active: a force, pushing or (cohesion) pulling
     if (i < nlocal) array_atom[i][0] += 1.0;
     if (!is_wall(j) && j < nlocal) array_atom[j][0] += 1.0;
     if (here) {
@@ -136,7 +136,7 @@ void Outputs::per_atom_and_local(const ContactProblem &p, const std::vector<doub
   fix_->size_local_rows = nrows;
   int m = 0;
   for (int c = 0; c < nc; ++c) {
-    if (mu[c] <= 0.0 || !p.counted[c]) continue;
+    if (mu[c] == 0.0 || !p.counted[c]) continue;
     const int j = p.body_j[c];
     double *row = fix_->array_local[m++];
     row[0] = atom->tag[p.body_i[c]];

@@ -6,6 +6,7 @@
 
 #include "sources/row_sink.h"
 #include "lammps_ops.h"
+#include "../core/cohesion.h"
 #include "../core/targets.h"
 
 #include "../core/residual.h"
@@ -42,6 +43,13 @@ StepResult ContactStep::solve(Solver &solver, const SolverSettings &settings,
   sink.begin_candidates(1.0);
   offer_rows(bodies, sink);
   Targets targets{bodies.recovery_speed, free_speed_scale(problem_, ops_), settings.tol};
+  // Cohesion: touching rows (D <= tol size) pull with their F, applied to u_free before the
+  // solve (core/cohesion.h); rows added by later rounds are not touching.
+  pull_any_ = effects.cohesion && !effects.cohesion->empty();
+  if (pull_any_) {
+    pair_values_of_rows(*effects.cohesion, 0, row_f_);
+    apply_cohesion(problem_, row_f_, settings.tol, ops_, pull_);
+  }
   targets.wall_velocity = effects.wall_velocity;
   if (restitution) {
     // the approach speeds at the start of the step: u^n, ghosts from their owners
@@ -60,7 +68,7 @@ StepResult ContactStep::solve(Solver &solver, const SolverSettings &settings,
   StepResult result;
   int targeted = 0;    // rows before it have their targets
   for (;;) {
-    if (restitution) restitution_of_rows(*effects.restitution, targeted);
+    if (restitution) pair_values_of_rows(*effects.restitution, targeted, row_e_);
     targets.apply(problem_, targeted);
     targeted = problem_.n_contacts();
     result.report = solver.solve(problem_, settings, ops_, mu_, u_);    // from the mu so far
@@ -77,7 +85,13 @@ StepResult ContactStep::solve(Solver &solver, const SolverSettings &settings,
       break;
     }
   }
-  if (history) history->store(problem_, atom->tag, mu_);
+  if (history) history->store(problem_, atom->tag, mu_);    // mu': the solver's variable
+  if (pull_any_) {
+    const int nc = problem_.n_contacts();
+    pull_.resize(nc, 0.0);
+    force_.resize(nc);
+    for (int c = 0; c < nc; ++c) force_[c] = mu_[c] - pull_[c];
+  }
   // The kinetic energy the solve may add (residual.h, energy_within_bound): the work of the
   // forces clearing overlaps present at q^n, sum mu max(0, -D) over the rows.
   result.clearing_work = ops_.sum_all(clearing_work(problem_, mu_));
@@ -105,17 +119,17 @@ double ContactStep::memory_usage() const
   return bytes;
 }
 
-// e of rows first.. from the atoms' types (a wall row: the atom's type with itself).
-void ContactStep::restitution_of_rows(const std::vector<double> &table, int first)
+void ContactStep::pair_values_of_rows(const std::vector<double> &table, int first,
+                                      std::vector<double> &out)
 {
   const int nc = problem_.n_contacts();
   const int stride = atom->ntypes + 1;
   const int *type = atom->type;
-  row_e_.resize(nc);
+  out.resize(nc);
   for (int c = first; c < nc; ++c) {
     const int ti = type[problem_.body_i[c]];
     const int j = problem_.body_j[c];
-    row_e_[c] = table[ti * stride + (is_wall(j) ? ti : type[j])];
+    out[c] = table[ti * stride + (is_wall(j) ? ti : type[j])];
   }
 }
 

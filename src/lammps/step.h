@@ -35,6 +35,8 @@ struct StepEffects {
   double bounce_vmin = 0.0;
   // per wall (by wall_index), null when every wall is at rest
   const std::vector<Vec3> *wall_velocity = nullptr;
+  // F per type pair ((ntypes + 1)^2), empty for none (core/cohesion.h)
+  const std::vector<double> *cohesion = nullptr;
 };
 
 class ContactStep : protected LAMMPS_NS::Pointers {
@@ -55,13 +57,15 @@ class ContactStep : protected LAMMPS_NS::Pointers {
   double memory_usage() const;
 
   const ContactProblem &problem() const { return problem_; }
-  const std::vector<double> &mu() const { return mu_; }
+  // The contact forces of the last step (mu, or mu' - F with cohesion: core/cohesion.h).
+  const std::vector<double> &mu() const { return pull_any_ ? force_ : mu_; }
   const std::vector<Vec3> &u() const { return u_; }
 
  private:
   Bodies build_bodies(bool needs_owner_map);
   void offer_rows(const Bodies &bodies, class RowSink &sink) const;
-  void restitution_of_rows(const std::vector<double> &table, int first);
+  // table[type_i, type_j] of rows first.. into out (a wall row: the atom's type with itself)
+  void pair_values_of_rows(const std::vector<double> &table, int first, std::vector<double> &out);
 
   int groupbit_;
   DistributedOps &ops_;
@@ -75,6 +79,10 @@ class ContactStep : protected LAMMPS_NS::Pointers {
   std::vector<double> free_speed_;    // RowSink's |u_free| per body
   std::vector<Vec3> u_start_;         // u^n per body, for restitution
   std::vector<double> row_e_;         // restitution per row
+  std::vector<double> row_f_;         // cohesion per row
+  std::vector<double> pull_;          // cohesion pulling each row this step (core/cohesion.h)
+  std::vector<double> force_;         // mu' - pull: the forces reported with cohesion
+  bool pull_any_ = false;
   std::unordered_map<LAMMPS_NS::tagint, int> owner_index_;
 };
 

@@ -54,6 +54,13 @@ foreach(_np 1 2 4)
                         NP ${_np} LABELS physics TIMEOUT 300)
 endforeach()
 
+# cohesion: a sphere hangs under a ceiling when m g < F and falls when m g > F; a touching pair
+# pulled apart opens at F; cohesion 0 is bit-identical to none
+foreach(_np 1 2 4)
+  hardcontact_deck_test(NAME phys_cohesion_np${_np} SCRIPT integration/test_phys_cohesion.py
+                        NP ${_np} LABELS physics TIMEOUT 300)
+endforeach()
+
 # the neighbor rebuild look-ahead under acceleration: a falling sphere with a skin 9 x its step
 hardcontact_deck_test(NAME phys_skin_lookahead SCRIPT integration/test_phys_skin_lookahead.py
                       NP 1 LABELS physics TIMEOUT 300)

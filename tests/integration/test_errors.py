@@ -198,6 +198,8 @@ CASES = [
          ["restitution", "expected a number"]),
     case("restitution_one_type", deck("restitution 0.5 1"), ["restitution takes 1 or 3 value"]),
     case("restitution_type_out_of_range", deck("restitution 0.5 1 3"), ["out of bounds"]),
+    case("cohesion_negative", deck("cohesion -1"), ["cohesion must be a force >= 0"]),
+    case("cohesion_not_a_number", deck("cohesion strong"), ["cohesion", "expected a number"]),
     case("bounce_negative", deck("restitution 0.5 bounce -1"), ["bounce must be a speed >= 0"]),
     case("wall_lo_not_a_number", deck("wall zplane abc NULL"), ["wall lo", "expected a number"]),
     case("wall_hi_not_a_number", deck("wall zplane 0 nan"), ["wall hi", "expected a number"]),
