@@ -33,32 +33,20 @@ hardcontact_deck_test(NAME phys_cluster_ranks SCRIPT integration/test_phys_clust
 hardcontact_deck_test(NAME phys_cluster_ranks_full SCRIPT integration/test_phys_cluster_ranks.py
                       NP 4 LABELS physics soak ARGS --full TIMEOUT 2400)
 
-# restitution: head-on pair leaves at e V (per type pair), e = 0 bit-identical to none, a ball
-# bouncing to e^2 of its height until its impact speed falls below `bounce` (serial part)
-foreach(_np 1 2 4)
-  hardcontact_deck_test(NAME phys_restitution_np${_np} SCRIPT integration/test_phys_restitution.py
-                        NP ${_np} LABELS physics TIMEOUT 300)
-endforeach()
-
-# moving plane walls (positions from variables): a rising floor carries a sphere, a vibrated
-# floor is followed below g and left above, a piston pushes without overlap
-foreach(_np 1 2 4)
-  hardcontact_deck_test(NAME phys_moving_wall_np${_np} SCRIPT integration/test_phys_moving_wall.py
-                        NP ${_np} LABELS physics TIMEOUT 300)
-endforeach()
-
-# walls made of regions: cylinder, cone (hopper), spherical bowl (inside), spherical obstacle
-# (outside): no overlap beyond the documented bounds, resting heights from geometry
-foreach(_np 1 2 4)
-  hardcontact_deck_test(NAME phys_region_wall_np${_np} SCRIPT integration/test_phys_region_wall.py
-                        NP ${_np} LABELS physics TIMEOUT 300)
-endforeach()
-
-# cohesion: a sphere hangs under a ceiling when m g < F and falls when m g > F; a touching pair
-# pulled apart opens at F; cohesion 0 is bit-identical to none
-foreach(_np 1 2 4)
-  hardcontact_deck_test(NAME phys_cohesion_np${_np} SCRIPT integration/test_phys_cohesion.py
-                        NP ${_np} LABELS physics TIMEOUT 300)
+# The opt-in effects, each at np 1, 2 and 4 (integration/test_phys_<effect>.py):
+#  restitution  head-on pair leaves at e V (per type pair), e = 0 bit-identical to none, a ball
+#               bouncing to e^2 of its height until its impact speed falls below `bounce`
+#  moving_wall  walls at variable positions: a rising floor carries a sphere, a vibrated floor
+#               is followed below g and left above, a piston pushes without overlap
+#  region_wall  walls made of regions: cylinder, cone (hopper), bowl (inside), spherical
+#               obstacle (outside): no overlap beyond the documented bounds, resting heights
+#  cohesion     a sphere hangs under a ceiling iff m g < F; a touching pair pulled apart opens
+#               at F; cohesion 0 bit-identical to none
+foreach(_effect restitution moving_wall region_wall cohesion)
+  foreach(_np 1 2 4)
+    hardcontact_deck_test(NAME phys_${_effect}_np${_np} SCRIPT integration/test_phys_${_effect}.py
+                          NP ${_np} LABELS physics TIMEOUT 300)
+  endforeach()
 endforeach()
 
 # the neighbor rebuild look-ahead under acceleration: a falling sphere with a skin 9 x its step
