@@ -35,15 +35,15 @@ void Targets::apply(ContactProblem &p, int first_row) const
     }
     // a moving wall: g = D + h n . (u_wall - u_i), the gap to where the wall will be
     const int j = p.body_j[c];
-    if (wall_velocity != nullptr && is_wall(j))
-      p.gap[c] += h * p.normal[c].dot((*wall_velocity)[wall_index(j)]);
+    const double wall_speed = wall_velocity != nullptr && is_wall(j)
+                                  ? p.normal[c].dot((*wall_velocity)[wall_index(j)])
+                                  : 0.0;    // n . u_wall
+    if (wall_speed != 0.0) p.gap[c] += h * wall_speed;
     if (u_start == nullptr) continue;
     const double e = (*restitution)[c];
     if (e <= 0.0) continue;
-    const Vec3 uw = wall_velocity != nullptr && is_wall(j) ? (*wall_velocity)[wall_index(j)]
-                                                           : Vec3::Zero().eval();
-    const double v = p.normal_speed(c, *u_start) + (is_wall(j) ? p.normal[c].dot(uw) : 0.0);
-    const double v_free = p.normal_speed(c, p.u_free) + (is_wall(j) ? p.normal[c].dot(uw) : 0.0);
+    const double v = p.normal_speed(c, *u_start) + wall_speed;
+    const double v_free = p.normal_speed(c, p.u_free) + wall_speed;
     if (v >= -bounce_vmin || d + h * v_free >= 0.0) continue;
     p.gap[c] = std::min(p.gap[c], 0.0) + h * e * v;
   }
