@@ -3,6 +3,9 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <Eigen/Geometry>
+
+#include <cmath>
 #include <vector>
 
 namespace hardcontact {
@@ -44,6 +47,21 @@ struct ContactProblem {
   // is held by both processes; exactly one of them counts it.
   std::vector<char> counted;
 
+  // Friction (laws/coulomb.h), present only when a scene asks for it. The bodies then rotate:
+  // a velocity vector holds n_bodies() linear velocities followed by n_bodies() angular ones
+  // (n_dof()). Per body: 1/I (0 for an obstacle), the radius (the arm of each of its contacts:
+  // the contact point lies on its surface along the normal), omega^n + h I^-1 torque. Per row:
+  // the Coulomb coefficient and two tangents completing the normal to an orthonormal frame
+  // (complete_frames).
+  std::vector<double> inv_inertia;
+  std::vector<double> radius;
+  std::vector<Vec3> w_free;
+  std::vector<double> friction;
+  std::vector<Vec3> tangent1, tangent2;
+
+  bool rotates() const { return !inv_inertia.empty(); }
+  // Length of a velocity vector: linear velocities, then angular ones if the bodies rotate.
+  int n_dof() const { return rotates() ? 2 * n_bodies() : n_bodies(); }
   int n_bodies() const { return static_cast<int>(inv_mass.size()); }
   int n_contacts() const { return static_cast<int>(body_i.size()); }
 
@@ -55,6 +73,9 @@ struct ContactProblem {
     gap.clear();
     size.clear();
     counted.clear();
+    friction.clear();
+    tangent1.clear();
+    tangent2.clear();
   }
   void add_contact(int i, int j, const Vec3 &n, double d, double s, bool count = true)
   {
@@ -74,6 +95,39 @@ struct ContactProblem {
     const Vec3 du = (is_wall(j) ? Vec3::Zero() : u[j]) - u[body_i[c]];
     return normal[c].dot(du);
   }
+  // Tangents of rows first.. (with friction): a function of the normal alone, so that two
+  // processes holding the same row, and the next step's warm start, see the same frame.
+  void complete_frames(int first)
+  {
+    const int nc = n_contacts();
+    tangent1.resize(nc);
+    tangent2.resize(nc);
+    for (int c = first; c < nc; ++c) {
+      const Vec3 &n = normal[c];
+      // the axis least aligned with n gives the best-conditioned cross product
+      int axis = 0;
+      if (std::abs(n[1]) < std::abs(n[axis])) axis = 1;
+      if (std::abs(n[2]) < std::abs(n[axis])) axis = 2;
+      tangent1[c] = n.cross(Vec3::Unit(axis)).normalized();
+      tangent2[c] = n.cross(tangent1[c]);
+    }
+  }
+  // The relative velocity of the contact points of row c (u_wall = 0): n . of it is
+  // normal_speed. The contact point sits at +r_i n on body i and -r_j n on body j, so spins
+  // add r_i n x w_i + r_j n x w_j.
+  Vec3 slip_velocity(int c, const std::vector<Vec3> &u) const
+  {
+    const int i = body_i[c], j = body_j[c], nb = n_bodies();
+    const Vec3 &n = normal[c];
+    Vec3 v = -u[i];
+    if (rotates()) v += radius[i] * n.cross(u[nb + i]);
+    if (!is_wall(j)) {
+      v += u[j];
+      if (rotates()) v += radius[j] * n.cross(u[nb + j]);
+    }
+    return v;
+  }
+
   // g_c(u): the gap predicted after the step (eq. 15 left-hand side).
   double predicted_gap(int c, const std::vector<Vec3> &u) const
   {

@@ -6,33 +6,6 @@
 
 namespace hardcontact {
 
-void DualOperator::free_velocities(std::vector<Vec3> &u) const
-{
-  u.resize(p_->n_bodies());
-  for (int b = 0; b < p_->n_owned; ++b) u[b] = p_->u_free[b];
-  forward(u);
-}
-
-void DualOperator::velocities(const std::vector<int> &rows, const std::vector<double> &mu,
-                              std::vector<Vec3> &u) const
-{
-  u.resize(p_->n_bodies());
-  for (int b = 0; b < p_->n_owned; ++b) u[b] = p_->u_free[b];
-  for (const int c : rows)
-    if (mu[c] != 0.0) apply(c, mu[c], u);
-  forward(u);
-}
-
-void DualOperator::velocities(const std::vector<double> &mu, std::vector<Vec3> &u) const
-{
-  u.resize(p_->n_bodies());
-  for (int b = 0; b < p_->n_owned; ++b) u[b] = p_->u_free[b];
-  const int nc = p_->n_contacts();
-  for (int c = 0; c < nc; ++c)
-    if (mu[c] != 0.0) apply(c, mu[c], u);
-  forward(u);
-}
-
 void DualOperator::count_degrees(const std::vector<int> &rows)
 {
   const ContactProblem &p = *p_;
@@ -43,14 +16,6 @@ void DualOperator::count_degrees(const std::vector<int> &rows)
     if (j >= 0 && j < p.n_owned) deg_[j] += 1.0;
   }
   ops_->forward(deg_.data(), 1);
-}
-
-double DualOperator::bound(const std::vector<int> &rows)
-{
-  count_degrees(rows);
-  double b = 0.0;
-  for (const int c : rows) b = std::max(b, gershgorin_row(c));
-  return ops_->max_all(b);
 }
 
 Eigen::SparseMatrix<double> DualOperator::assembled() const
@@ -84,19 +49,35 @@ Eigen::SparseMatrix<double> DualOperator::assembled() const
   return A;
 }
 
-void DualOperator::forces(const std::vector<double> &mu, std::vector<Vec3> &force) const
+template <int B>
+void DualOperator::forces(const std::vector<double> &mu, std::vector<Vec3> &force,
+                          std::vector<Vec3> *torque) const
 {
   const ContactProblem &p = *p_;
   force.assign(p.n_bodies(), Vec3::Zero());
+  if (torque) torque->assign(p.n_bodies(), Vec3::Zero());
   const int nc = p.n_contacts();
   for (int c = 0; c < nc; ++c) {
-    if (mu[c] == 0.0) continue;
-    const Vec3 f = mu[c] * p.normal[c];
+    const double *m = &mu[static_cast<size_t>(B) * c];
+    if (!nonzero<B>(m)) continue;
+    Vec3 f = m[0] * p.normal[c];
+    if constexpr (B == 3) f += m[1] * p.tangent1[c] + m[2] * p.tangent2[c];
     const int i = p.body_i[c], j = p.body_j[c];
     if (i < p.n_owned) force[i] -= f;
     if (j >= 0 && j < p.n_owned) force[j] += f;
+    if constexpr (B == 3) {
+      if (!torque) continue;
+      // the force on j acts at -r_j n, its opposite on i at +r_i n (apply_block)
+      const Vec3 turn = p.normal[c].cross(f);
+      if (i < p.n_owned) (*torque)[i] -= p.radius[i] * turn;
+      if (j >= 0 && j < p.n_owned) (*torque)[j] -= p.radius[j] * turn;
+    }
   }
 }
+template void DualOperator::forces<1>(const std::vector<double> &, std::vector<Vec3> &,
+                                      std::vector<Vec3> *) const;
+template void DualOperator::forces<3>(const std::vector<double> &, std::vector<Vec3> &,
+                                      std::vector<Vec3> *) const;
 
 double dual_operator_bound(const ContactProblem &p, const std::vector<int> &rows,
                            DistributedOps &ops)
@@ -113,13 +94,18 @@ double dual_operator_bound(const ContactProblem &p, DistributedOps &ops)
   return dual_operator_bound(p, all, ops);
 }
 
+template <int B>
 void contact_forces(const ContactProblem &p, const std::vector<double> &mu,
-                    std::vector<Vec3> &force)
+                    std::vector<Vec3> &force, std::vector<Vec3> *torque)
 {
   SerialOps none;    // forces need no communication
   DualOperator op;
   op.bind(p, none);
-  op.forces(mu, force);
+  op.forces<B>(mu, force, torque);
 }
+template void contact_forces<1>(const ContactProblem &, const std::vector<double> &,
+                                std::vector<Vec3> &, std::vector<Vec3> *);
+template void contact_forces<3>(const ContactProblem &, const std::vector<double> &,
+                                std::vector<Vec3> &, std::vector<Vec3> *);
 
 }    // namespace hardcontact

@@ -19,6 +19,7 @@ class DualOperator {
   {
     p_ = &p;
     ops_ = &ops;
+    if (!p.friction.empty()) shift_.assign(p.n_contacts(), 0.0);
   }
   const ContactProblem &problem() const { return *p_; }
   DistributedOps &ops() const { return *ops_; }
@@ -26,31 +27,68 @@ class DualOperator {
   // Eq. 16: u = u_free + h M^-1 G^T mu over the listed rows (rows outside hold mu = 0), for
   // owned bodies, then the ghosts' u from their owners. Each row pushes only its owned bodies:
   // a row coupling an owned body with a ghost is held by both processes (newton off), so each
-  // side applies its own half exactly once.
+  // side applies its own half exactly once. B: the law's block (multipliers per row, mu[B c..]).
+  template <int B = 1>
   void velocities(const std::vector<int> &rows, const std::vector<double> &mu,
-                  std::vector<Vec3> &u) const;
-  // The same with each row's multiplier computed as the row is applied (mu_of(c) -> mu_c): a
-  // solver's update of mu fused into the one pass over the rows.
-  template <class MuOf>
+                  std::vector<Vec3> &u) const
+  {
+    velocities_with<B>(rows, [&](int c) { return &mu[static_cast<size_t>(B) * c]; }, u);
+  }
+  // The same with each row's block computed as the row is applied (mu_of(c) -> pointer to
+  // its B multipliers): a solver's update of mu fused into the one pass over the rows.
+  template <int B = 1, class MuOf>
   void velocities_with(const std::vector<int> &rows, MuOf &&mu_of, std::vector<Vec3> &u) const
   {
-    u.resize(p_->n_bodies());
-    for (int b = 0; b < p_->n_owned; ++b) u[b] = p_->u_free[b];
+    start_velocities(u);
     for (const int c : rows) {
-      const double m = mu_of(c);
-      if (m != 0.0) apply(c, m, u);
+      const double *m = mu_of(c);
+      if (nonzero<B>(m)) apply_block<B>(c, m, u);
     }
     forward(u);
   }
   // The same over every row.
-  void velocities(const std::vector<double> &mu, std::vector<Vec3> &u) const;
+  template <int B = 1>
+  void velocities(const std::vector<double> &mu, std::vector<Vec3> &u) const
+  {
+    start_velocities(u);
+    const int nc = p_->n_contacts();
+    for (int c = 0; c < nc; ++c) {
+      const double *m = &mu[static_cast<size_t>(B) * c];
+      if (nonzero<B>(m)) apply_block<B>(c, m, u);
+    }
+    forward(u);
+  }
   // u = u_free (mu = 0).
-  void free_velocities(std::vector<Vec3> &u) const;
+  void free_velocities(std::vector<Vec3> &u) const
+  {
+    start_velocities(u);
+    forward(u);
+  }
   // Ghost copies of u from their owners (after in-place updates with apply()).
-  void forward(std::vector<Vec3> &u) const { ops_->forward(u.data()->data(), 3); }
+  void forward(std::vector<Vec3> &u) const
+  {
+    ops_->forward(u.data()->data(), 3);
+    if (p_->rotates()) ops_->forward(u[p_->n_bodies()].data(), 3);
+  }
 
   // g_c(u) = D_c + h G_c u, eq. 15: also the gradient of the dual objective at mu(u).
   double gap(int c, const std::vector<Vec3> &u) const { return p_->predicted_gap(c, u); }
+  // The B components of the gradient of the dual at u for row c: the gap, then (friction)
+  // the tangential displacements h t_k . v_slip, the gap shifted by shift(c) (laws/coulomb.h).
+  template <int B>
+  void gap_block(int c, const std::vector<Vec3> &u, double *g) const
+  {
+    if constexpr (B == 1) {
+      g[0] = gap(c, u);
+    } else {
+      static_assert(B == 3, "blocks of 1 (normal) or 3 (Coulomb)");
+      const ContactProblem &p = *p_;
+      const Vec3 v = p.h * p.slip_velocity(c, u);
+      g[0] = p.gap[c] + p.normal[c].dot(v) + shift_[c];
+      g[1] = p.tangent1[c].dot(v);
+      g[2] = p.tangent2[c].dot(v);
+    }
+  }
   // Adds the velocity change of an impulse h dmu G_c to the owned bodies of row c.
   void apply(int c, double dmu, std::vector<Vec3> &u) const
   {
@@ -60,6 +98,29 @@ class DualOperator {
     if (i < p.n_owned) u[i] -= p.inv_mass[i] * impulse;
     if (j >= 0 && j < p.n_owned) u[j] += p.inv_mass[j] * impulse;
   }
+  // The same for a block: with friction the impulse h (m_n n + m_1 t_1 + m_2 t_2) acts on j
+  // at -r_j n and its opposite on i at +r_i n, so both spin by -r I^-1 n x impulse.
+  template <int B>
+  void apply_block(int c, const double *dm, std::vector<Vec3> &u) const
+  {
+    if constexpr (B == 1) {
+      apply(c, dm[0], u);
+    } else {
+      const ContactProblem &p = *p_;
+      const Vec3 impulse =
+          p.h * (dm[0] * p.normal[c] + dm[1] * p.tangent1[c] + dm[2] * p.tangent2[c]);
+      const int i = p.body_i[c], j = p.body_j[c], nb = p.n_bodies();
+      const Vec3 turn = p.normal[c].cross(impulse);
+      if (i < p.n_owned) {
+        u[i] -= p.inv_mass[i] * impulse;
+        if (p.rotates()) u[nb + i] -= (p.inv_inertia[i] * p.radius[i]) * turn;
+      }
+      if (j >= 0 && j < p.n_owned) {
+        u[j] += p.inv_mass[j] * impulse;
+        if (p.rotates()) u[nb + j] -= (p.inv_inertia[j] * p.radius[j]) * turn;
+      }
+    }
+  }
 
   // A_cc = h^2 (w_i + w_j): the exact step along one row (Gauss-Seidel).
   double diagonal(int c) const
@@ -68,42 +129,105 @@ class DualOperator {
     const int j = p.body_j[c];
     return p.h * p.h * (p.inv_mass[p.body_i[c]] + (is_wall(j) ? 0.0 : p.inv_mass[j]));
   }
+  // The largest eigenvalue of the block A_cc: with friction it is diagonal (n, t_1, t_2 are
+  // orthonormal and n x n = 0), its tangential entries h^2 sum (w + r^2 / I).
+  template <int B>
+  double block_diagonal(int c) const
+  {
+    if constexpr (B == 1) {
+      return diagonal(c);
+    } else {
+      const ContactProblem &p = *p_;
+      const int j = p.body_j[c];
+      return p.h * p.h * (body_weight(p.body_i[c]) + (is_wall(j) ? 0.0 : body_weight(j)));
+    }
+  }
   // Gershgorin: the off-diagonal entries of row c are h^2 w_k n_c.n_d for rows d sharing body
   // k, so |A_cc| + sum |A_cd| <= h^2 (w_i deg_i + w_j deg_j) with deg_k the rows touching k.
-  // count_degrees() over the listed rows first (owners count, ghosts receive: an owner holds
-  // every row of its own bodies).
+  // With friction each of the B components of a row meets B of every row d on body k, each
+  // entry at most w_k + r_k^2 / I_k. count_degrees() over the listed rows first (owners
+  // count, ghosts receive: an owner holds every row of its own bodies).
   void count_degrees(const std::vector<int> &rows);
+  template <int B = 1>
   double gershgorin_row(int c) const
   {
     const ContactProblem &p = *p_;
     const int i = p.body_i[c], j = p.body_j[c];
-    double row = p.inv_mass[i] * deg_[i];
-    if (!is_wall(j)) row += p.inv_mass[j] * deg_[j];
-    return p.h * p.h * row;
+    if constexpr (B == 1) {
+      double row = p.inv_mass[i] * deg_[i];
+      if (!is_wall(j)) row += p.inv_mass[j] * deg_[j];
+      return p.h * p.h * row;
+    } else {
+      double row = body_weight(i) * deg_[i];
+      if (!is_wall(j)) row += body_weight(j) * deg_[j];
+      return B * p.h * p.h * row;
+    }
   }
   // L >= largest eigenvalue of A restricted to the listed rows, over all processes (Remark 8
   // for any radii and masses: 2 kappa h^2 / m with equal masses and kappa rows per body).
   // 0 when there is no row. Counts degrees.
-  double bound(const std::vector<int> &rows);
+  template <int B = 1>
+  double bound(const std::vector<int> &rows)
+  {
+    count_degrees(rows);
+    double b = 0.0;
+    for (const int c : rows) {
+      const double r = gershgorin_row<B>(c);
+      b = b > r ? b : r;
+    }
+    return ops_->max_all(b);
+  }
 
-  // The assembled A over every row, for direct solvers; ghosts count as their owned copy
-  // (ContactProblem::owner; throws if a body is owned by another process).
+  // The assembled A over every row, for direct solvers (normal law); ghosts count as their
+  // owned copy (ContactProblem::owner; throws if a body is owned by another process).
   Eigen::SparseMatrix<double> assembled() const;
 
-  // sum_c mu_c G_c on each owned body: the contact force (eq. 16 divided by h), per body.
-  void forces(const std::vector<double> &mu, std::vector<Vec3> &force) const;
+  // sum_c G_c^T mu_c on each owned body: the contact force (eq. 16 divided by h), per body,
+  // and with friction the contact torque (torque: null to skip).
+  template <int B = 1>
+  void forces(const std::vector<double> &mu, std::vector<Vec3> &force,
+              std::vector<Vec3> *torque = nullptr) const;
+
+  // The normal target shift of each row (friction, laws/coulomb.h): 0 after bind().
+  std::vector<double> &shift() { return shift_; }
+  double shift(int c) const { return shift_[c]; }
 
  private:
+  // u = u_free (owned bodies), then the spins.
+  void start_velocities(std::vector<Vec3> &u) const
+  {
+    const ContactProblem &p = *p_;
+    const int nb = p.n_bodies();
+    u.resize(p.n_dof());
+    for (int b = 0; b < p.n_owned; ++b) u[b] = p.u_free[b];
+    if (p.rotates())
+      for (int b = 0; b < p.n_owned; ++b) u[nb + b] = p.w_free[b];
+  }
+  template <int B>
+  static bool nonzero(const double *m)
+  {
+    if constexpr (B == 1) return m[0] != 0.0;
+    else return m[0] != 0.0 || m[1] != 0.0 || m[2] != 0.0;
+  }
+  // w + r^2 / I: the inverse effective mass of a body's contact point in a tangential direction
+  double body_weight(int b) const
+  {
+    const ContactProblem &p = *p_;
+    return p.inv_mass[b] + (p.rotates() ? p.inv_inertia[b] * p.radius[b] * p.radius[b] : 0.0);
+  }
+
   const ContactProblem *p_ = nullptr;
   DistributedOps *ops_ = nullptr;
-  std::vector<double> deg_;    // per body, from count_degrees()
+  std::vector<double> deg_;      // per body, from count_degrees()
+  std::vector<double> shift_;    // per row, friction only
 };
 
 // One-off forms of the above, for the host and tests (they bind an operator of their own).
 double dual_operator_bound(const ContactProblem &p, DistributedOps &ops);
 double dual_operator_bound(const ContactProblem &p, const std::vector<int> &rows,
                            DistributedOps &ops);
+template <int B = 1>
 void contact_forces(const ContactProblem &p, const std::vector<double> &mu,
-                    std::vector<Vec3> &force);
+                    std::vector<Vec3> &force, std::vector<Vec3> *torque = nullptr);
 
 }    // namespace hardcontact

@@ -23,31 +23,43 @@ double row_scales(const ContactProblem &p, double tol, DistributedOps &ops,
   return v;
 }
 
-double clearing_work(const ContactProblem &p, const std::vector<double> &mu)
+double clearing_work(const ContactProblem &p, const std::vector<double> &mu, int block)
 {
   double work = 0.0;
   const int nc = p.n_contacts();
-  for (int c = 0; c < nc; ++c)
-    if (p.counted[c] && mu[c] > 0.0) work += mu[c] * std::max(0.0, -p.gap[c]);
+  for (int c = 0; c < nc; ++c) {
+    const double m = mu[static_cast<size_t>(block) * c];
+    if (p.counted[c] && m > 0.0) work += m * std::max(0.0, -p.gap[c]);
+  }
   return work;
 }
 
 bool energy_within_bound(const ContactProblem &p, const std::vector<double> &mu,
-                         const std::vector<Vec3> &u, DistributedOps &ops)
+                         const std::vector<Vec3> &u, DistributedOps &ops, int block)
 {
   // sums: gain of kinetic energy, kinetic energy of u_free, allowed work (each body and each
   // row counted once over all processes)
-  double sums[3] = {0.0, 0.0, clearing_work(p, mu)};
+  double sums[3] = {0.0, 0.0, clearing_work(p, mu, block)};
   for (int b = 0; b < p.n_owned; ++b) {
     if (p.inv_mass[b] <= 0.0) continue;    // an obstacle: u = u_free
     const double m = 1.0 / p.inv_mass[b];
     sums[0] += 0.5 * m * (u[b] - p.u_free[b]).dot(u[b] + p.u_free[b]);
     sums[1] += 0.5 * m * p.u_free[b].squaredNorm();
   }
+  if (p.rotates()) {
+    const int nb = p.n_bodies();
+    for (int b = 0; b < p.n_owned; ++b) {
+      if (p.inv_inertia[b] <= 0.0) continue;
+      const double inertia = 1.0 / p.inv_inertia[b];
+      sums[0] += 0.5 * inertia * (u[nb + b] - p.w_free[b]).dot(u[nb + b] + p.w_free[b]);
+      sums[1] += 0.5 * inertia * p.w_free[b].squaredNorm();
+    }
+  }
   const int nc = p.n_contacts();
   for (int c = 0; c < nc; ++c) {
-    if (!p.counted[c] || mu[c] <= 0.0) continue;
-    sums[2] += mu[c] * p.gap_roundoff;
+    const double mc = mu[static_cast<size_t>(block) * c];
+    if (!p.counted[c] || mc <= 0.0) continue;
+    sums[2] += mc * p.gap_roundoff;
     // round-off: the kinetic energy of moving the pair kGapRoundoff size apart in one step
     const int i = p.body_i[c], j = p.body_j[c];
     const double w = p.inv_mass[i] + (j >= 0 ? p.inv_mass[j] : 0.0);

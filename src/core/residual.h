@@ -11,6 +11,7 @@
 
 #include "contact_problem.h"
 #include "distributed_ops.h"
+#include "dual_operator.h"
 #include "laws/normal.h"
 
 #include <vector>
@@ -49,21 +50,35 @@ double row_scales(const ContactProblem &p, double tol, DistributedOps &ops,
 
 // This process's part of sum_c mu_c max(0, -D_c) over its counted rows: the work of clearing
 // overlaps present at q^n, the kinetic energy a step may gain (energy_within_bound).
-double clearing_work(const ContactProblem &p, const std::vector<double> &mu);
+// block: multipliers per row (the normal force first).
+double clearing_work(const ContactProblem &p, const std::vector<double> &mu, int block = 1);
 
-// Largest Law::violation over all rows of all processes.
+// The coefficient a law reads for row c (friction; none for the normal law).
 template <class Law>
-double residual(const ContactProblem &p, const std::vector<double> &mu,
-                const std::vector<Vec3> &u, const std::vector<double> &scale,
-                DistributedOps &ops)
+double law_coefficient(const ContactProblem &p, int c)
 {
+  if constexpr (Law::block == 1) return 0.0;
+  else return p.friction[c];
+}
+
+// Largest Law::violation over all rows of all processes, at u = u(mu) (op bound to the
+// problem: the gradient of each row, shifts included).
+template <class Law>
+double residual(const DualOperator &op, const std::vector<double> &mu,
+                const std::vector<Vec3> &u, const std::vector<double> &scale)
+{
+  constexpr int B = Law::block;
+  const ContactProblem &p = op.problem();
   double r = 0.0;
+  double g[B];
   const int nc = p.n_contacts();
   for (int c = 0; c < nc; ++c) {
-    const double v = Law::violation(p.predicted_gap(c, u), mu[c], scale[c]);
+    op.gap_block<B>(c, u, g);
+    const double v = Law::violation(g, &mu[static_cast<size_t>(B) * c],
+                                    law_coefficient<Law>(p, c), scale[c]);
     r = r > v ? r : v;
   }
-  return ops.max_all(r);
+  return op.ops().max_all(r);
 }
 
 // Prop. 3 for an inexact solve. With A = h^2 G M^-1 G^T and g(mu) = D + h G u(mu),
@@ -71,7 +86,8 @@ double residual(const ContactProblem &p, const std::vector<double> &mu,
 // so the exact solution (mu.g = 0) never gains kinetic energy beyond the work mu.max(0, -D) of
 // clearing overlaps present at q^n (none when D >= 0: then 0 is in K_h). An iterate within the
 // row tolerance may: true when u gains at most that work plus round-off.
+// With friction the kinetic energy includes the spins; the friction's own work is <= 0.
 bool energy_within_bound(const ContactProblem &p, const std::vector<double> &mu,
-                         const std::vector<Vec3> &u, DistributedOps &ops);
+                         const std::vector<Vec3> &u, DistributedOps &ops, int block = 1);
 
 }    // namespace hardcontact

@@ -42,8 +42,10 @@ class Solver {
                             std::vector<Vec3> &u) = 0;
 };
 
-// nullptr for an unknown name.
-std::unique_ptr<Solver> make_solver(const std::string &name);
+// nullptr for an unknown name, or with friction (laws/coulomb.h: 3 multipliers per row,
+// mu[3 c..] = normal, tangent1, tangent2) for a solver without it.
+std::unique_ptr<Solver> make_solver(const std::string &name, bool friction = false);
+bool solver_has_friction(const std::string &name);
 // The names make_solver knows, for error messages and docs.
 std::vector<std::string> solver_names();
 

@@ -1,5 +1,7 @@
 #include "working_set.h"
 
+#include "laws/coulomb.h"
+
 namespace hardcontact {
 
 template <class Law>
@@ -14,7 +16,7 @@ void WorkingSet<Law>::init(const ContactProblem &p, const std::vector<double> &m
   for (int c = 0; c < nc; ++c) {
     const int j = p.body_j[c];
     const Vec3 du = (is_wall(j) ? Vec3::Zero() : p.u_free[j]) - p.u_free[p.body_i[c]];
-    if (mu[c] > 0.0 || p.gap[c] <= p.h * du.norm()) {
+    if (mu[static_cast<size_t>(Law::block) * c] > 0.0 || p.gap[c] <= p.h * du.norm()) {
       rows_.push_back(c);
       member_[c] = 1;
     }
@@ -28,7 +30,7 @@ int WorkingSet<Law>::expand(const ContactProblem &p, const std::vector<Vec3> &u,
   const int nc = p.n_contacts();
   for (int c = 0; c < nc; ++c) {
     if (member_[c]) continue;
-    if (violation(c, p.predicted_gap(c, u), 0.0) <= tol) continue;
+    if (NormalLaw::violation(p.predicted_gap(c, u), 0.0, scale_[c]) <= tol) continue;
     rows_.push_back(c);
     member_[c] = 1;
     ++added;
@@ -46,9 +48,10 @@ typename WorkingSet<Law>::Verdict WorkingSet<Law>::check(int k, double residual,
   if (scheduled) next_check_ += next_check_ < 64 ? next_check_ : 64;
   if (ops.sum_all(expand(p, u, tol)) > 0.0) return Verdict::Grown;
   if (residual > tol) return Verdict::Iterate;
-  return energy_within_bound(p, mu, u, ops) ? Verdict::Converged : Verdict::Iterate;
+  return energy_within_bound(p, mu, u, ops, Law::block) ? Verdict::Converged : Verdict::Iterate;
 }
 
 template class WorkingSet<NormalLaw>;
+template class WorkingSet<CoulombLaw>;
 
 }    // namespace hardcontact

@@ -32,13 +32,20 @@ class WorkingSet {
   // and the tolerance scale of every row (residual.h).
   void init(const ContactProblem &p, const std::vector<double> &mu, double tol,
             DistributedOps &ops);
-  // Adds the rows outside the set that u violates by more than tol; returns how many (local).
+  // Adds the rows outside the set that u violates by more than tol (predicted overlap: a row
+  // without force has no other condition once friction's shift is at its fixed point);
+  // returns how many (local).
   int expand(const ContactProblem &p, const std::vector<Vec3> &u, double tol);
 
   const std::vector<int> &rows() const { return rows_; }
   bool contains(int c) const { return member_[c] != 0; }
-  // Row c's violation in units of its scale, the quantity compared with tol.
-  double violation(int c, double g, double mu) const { return Law::violation(g, mu, scale_[c]); }
+  // Row c's violation in units of its scale, the quantity compared with tol (g, m: the row's
+  // Law::block components, coef: its coefficient).
+  double violation(int c, const double *g, const double *m, double coef) const
+  {
+    return Law::violation(g, m, coef, scale_[c]);
+  }
+  double scale(int c) const { return scale_[c]; }
   const std::vector<double> &scales() const { return scale_; }
   double speed_scale() const { return speed_scale_; }
 

@@ -1,10 +1,13 @@
 // The paper's contact law (eq. 17-18): one multiplier per contact, the normal force mu >= 0,
 // complementary to the predicted gap g >= 0. A law is the set the multipliers may take; the
 // solvers are written against this interface (templates, no virtual call per contact):
-//   block              multipliers per contact
-//   project(mu)        the nearest admissible value (the projection of the dual method, 3.3)
-//   violation(g,mu,s)  how far (g, mu) is from complementarity, in units of the row scale s
-// Later laws (Coulomb cone, cohesion mu >= -c, rolling resistance) are headers beside this one.
+//   block                   multipliers per contact (and components of g, the gradient of the
+//                           dual: the predicted gap first, then tangential displacements)
+//   project(m, coef)        the nearest admissible block m[0..block) (the projection of the
+//                           dual method, 3.3); coef: the row's coefficient (friction)
+//   violation(g, m, coef, s) how far (g, m) is from complementarity, in units of the row
+//                           scale s
+// Other laws are headers beside this one (coulomb.h).
 #pragma once
 
 namespace hardcontact {
@@ -20,6 +23,13 @@ struct NormalLaw {
   {
     const double v = mu > 0.0 ? (g < 0.0 ? -g : g) : (g < 0.0 ? -g : 0.0);
     return v / scale;
+  }
+
+  // The block forms the solvers use (block 1: the scalar forms above).
+  static void project(double *m, double) { m[0] = project(m[0]); }
+  static double violation(const double *g, const double *m, double, double scale)
+  {
+    return violation(g[0], m[0], scale);
   }
 };
 

@@ -8,23 +8,35 @@ namespace hardcontact {
 // The dual of eq. 15 as a minimisation over the law's set:
 //   phi(mu) = 1/2 mu.A mu + b.mu,  grad phi = A mu + b = g(u(mu)),  A = h^2 G M^-1 G^T,
 // so the Uzawa step of section 3.3 is projected gradient descent with step rho, and
-// phi(mu) = 1/2 mu.(g(mu) + b) costs no extra product.
+// phi(mu) = 1/2 mu.(g(mu) + b) costs no extra product. With friction mu and g have B = 3
+// components per row (laws/coulomb.h) and b carries the shift of the normal target.
+template <class Law>
+double ApgdSolver<Law>::linear(int c, int k) const
+{
+  const double b = b_[static_cast<size_t>(B) * c + k];
+  if constexpr (B == 1) return b;
+  else return k == 0 ? b + this->op_.shift(c) : b;
+}
+
 template <class Law>
 void ApgdSolver<Law>::gaps(const std::vector<double> &m, std::vector<double> &g,
                            std::vector<Vec3> &u)
 {
-  this->op_.velocities(this->set_.rows(), m, u);
-  for (const int c : this->set_.rows()) g[c] = this->op_.gap(c, u);
+  this->op_.template velocities<B>(this->set_.rows(), m, u);
+  for (const int c : this->set_.rows())
+    this->op_.template gap_block<B>(c, u, &g[static_cast<size_t>(B) * c]);
 }
 
 template <class Law>
 void ApgdSolver<Law>::restart(const std::vector<double> &mu)
 {
   theta_ = 1.0;
-  for (const int c : this->set_.rows()) {
-    y_[c] = mu[c];
-    gy_[c] = this->g_[c];
-  }
+  for (const int c : this->set_.rows())
+    for (int k = 0; k < B; ++k) {
+      const size_t a = static_cast<size_t>(B) * c + k;
+      y_[a] = mu[a];
+      gy_[a] = this->g_[a];
+    }
 }
 
 template <class Law>
@@ -32,13 +44,17 @@ void ApgdSolver<Law>::start(const SolverSettings &s, std::vector<double> &mu,
                             std::vector<Vec3> &u)
 {
   const int nc = this->op_.problem().n_contacts();
-  for (auto *v : {&b_, &y_, &gy_, &next_, &gnext_}) v->assign(nc, 0.0);
+  const size_t n = static_cast<size_t>(B) * nc;
+  for (auto *v : {&b_, &y_, &gy_, &next_, &gnext_}) v->assign(n, 0.0);
   std::fill(this->g_.begin(), this->g_.end(), 0.0);
   this->op_.free_velocities(u);
-  for (int c = 0; c < nc; ++c) b_[c] = this->op_.gap(c, u);
+  for (int c = 0; c < nc; ++c) {
+    this->op_.template gap_block<B>(c, u, &b_[static_cast<size_t>(B) * c]);
+    if constexpr (B > 1) b_[static_cast<size_t>(B) * c] -= this->op_.shift(c);
+  }
   gaps(mu, this->g_, u);
   // Start L below the Gershgorin bound of the working set: backtracking raises it as needed.
-  L_ = s.rho > 0.0 ? 1.0 / s.rho : 0.25 * this->op_.bound(this->set_.rows());
+  L_ = s.rho > 0.0 ? 1.0 / s.rho : 0.25 * this->op_.template bound<B>(this->set_.rows());
   restart(mu);
   this->rho_ = L_ > 0.0 ? 1.0 / L_ : 0.0;
   residual_ready_ = false;
@@ -54,8 +70,10 @@ double ApgdSolver<Law>::set_residual(const std::vector<double> &mu, const std::v
     return residual_;
   }
   double r = 0.0;
-  for (const int c : this->set_.rows())
-    r = std::max(r, this->set_.violation(c, this->g_[c], mu[c]));
+  for (const int c : this->set_.rows()) {
+    const size_t a = static_cast<size_t>(B) * c;
+    r = std::max(r, this->set_.violation(c, &this->g_[a], &mu[a], this->coef(c)));
+  }
   return r;
 }
 
@@ -66,10 +84,21 @@ double ApgdSolver<Law>::set_residual(const std::vector<double> &mu, const std::v
 template <class Law>
 void ApgdSolver<Law>::grown(const SolverSettings &, std::vector<double> &mu, std::vector<Vec3> &u)
 {
-  for (const int c : this->set_.rows()) this->g_[c] = this->op_.gap(c, u);    // u = u(mu)
+  for (const int c : this->set_.rows())    // u = u(mu)
+    this->op_.template gap_block<B>(c, u, &this->g_[static_cast<size_t>(B) * c]);
   gaps(y_, gy_, u);
-  this->op_.velocities(this->set_.rows(), mu, u);
+  this->op_.template velocities<B>(this->set_.rows(), mu, u);
   residual_ready_ = false;    // the set is larger
+}
+
+// Friction's shifts moved the linear term (g_ follows, base class): a new problem near the
+// old one, so the momentum is dropped.
+template <class Law>
+void ApgdSolver<Law>::shifted(const SolverSettings &, std::vector<double> &mu,
+                              std::vector<Vec3> &)
+{
+  restart(mu);
+  residual_ready_ = false;
 }
 
 // Three passes over the rows per iteration: the trial point fused with its velocities (eq. 16),
@@ -86,19 +115,33 @@ bool ApgdSolver<Law>::step(const SolverSettings &, std::vector<double> &mu, std:
   // phi at the trial point (this is what makes 1/L a valid step without knowing ||A||).
   double sums[5];
   for (;;) {
-    this->op_.velocities_with(
-        rows, [&](int c) { return next_[c] = Law::project(y_[c] - gy_[c] / L_); }, u);
+    this->op_.template velocities_with<B>(
+        rows,
+        [&](int c) {
+          double *m = &next_[static_cast<size_t>(B) * c];
+          for (int k = 0; k < B; ++k) {
+            const size_t a = static_cast<size_t>(B) * c + k;
+            m[k] = y_[a] - gy_[a] / L_;
+          }
+          Law::project(m, this->coef(c));
+          return m;
+        },
+        u);
     // phi(y), phi(next), gy.(next - y), |next - y|^2, gy.(next - mu) - each row counted once
     for (double &v : sums) v = 0.0;
     for (const int c : rows) {
-      gnext_[c] = this->op_.gap(c, u);
+      this->op_.template gap_block<B>(c, u, &gnext_[static_cast<size_t>(B) * c]);
       if (!p.counted[c]) continue;
-      const double d = next_[c] - y_[c];
-      sums[0] += 0.5 * y_[c] * (gy_[c] + b_[c]);
-      sums[1] += 0.5 * next_[c] * (gnext_[c] + b_[c]);
-      sums[2] += gy_[c] * d;
-      sums[3] += d * d;
-      sums[4] += gy_[c] * (next_[c] - mu[c]);
+      for (int k = 0; k < B; ++k) {
+        const size_t a = static_cast<size_t>(B) * c + k;
+        const double d = next_[a] - y_[a];
+        const double b = linear(c, k);
+        sums[0] += 0.5 * y_[a] * (gy_[a] + b);
+        sums[1] += 0.5 * next_[a] * (gnext_[a] + b);
+        sums[2] += gy_[a] * d;
+        sums[3] += d * d;
+        sums[4] += gy_[a] * (next_[a] - mu[a]);
+      }
     }
     this->op_.ops().sum_all(sums, 5);
     const double slack = 1e-12 * (std::abs(sums[0]) + std::abs(sums[1]));
@@ -109,7 +152,7 @@ bool ApgdSolver<Law>::step(const SolverSettings &, std::vector<double> &mu, std:
     L_ *= 2.0;
   }
   if (!(L_ < 1e300)) {    // the estimate broke down: report the iterate, unconverged
-    this->op_.velocities(rows, mu, u);
+    this->op_.template velocities<B>(rows, mu, u);
     this->rho_ = 1.0 / L_;
     residual_ready_ = false;
     return false;
@@ -124,11 +167,15 @@ bool ApgdSolver<Law>::step(const SolverSettings &, std::vector<double> &mu, std:
   }
   double r = 0.0;
   for (const int c : rows) {
-    y_[c] = next_[c] + beta * (next_[c] - mu[c]);
-    gy_[c] = gnext_[c] + beta * (gnext_[c] - g[c]);
-    mu[c] = next_[c];
-    g[c] = gnext_[c];
-    r = std::max(r, this->set_.violation(c, g[c], mu[c]));
+    for (int k = 0; k < B; ++k) {
+      const size_t a = static_cast<size_t>(B) * c + k;
+      y_[a] = next_[a] + beta * (next_[a] - mu[a]);
+      gy_[a] = gnext_[a] + beta * (gnext_[a] - g[a]);
+      mu[a] = next_[a];
+      g[a] = gnext_[a];
+    }
+    const size_t a = static_cast<size_t>(B) * c;
+    r = std::max(r, this->set_.violation(c, &g[a], &mu[a], this->coef(c)));
   }
   residual_ = r;
   residual_ready_ = true;
@@ -139,5 +186,6 @@ bool ApgdSolver<Law>::step(const SolverSettings &, std::vector<double> &mu, std:
 }
 
 template class ApgdSolver<NormalLaw>;
+template class ApgdSolver<CoulombLaw>;
 
 }    // namespace hardcontact

@@ -4,6 +4,7 @@
 // sqrt(cond) iterations instead of cond for Uzawa.
 #pragma once
 
+#include "../laws/coulomb.h"
 #include "../laws/normal.h"
 #include "iterative_solver.h"
 
@@ -16,6 +17,7 @@ class ApgdSolver : public IterativeSolver<Law> {
   bool step(const SolverSettings &s, std::vector<double> &mu, std::vector<Vec3> &u) override;
   void grown(const SolverSettings &s, std::vector<double> &mu, std::vector<Vec3> &u) override;
   double set_residual(const std::vector<double> &mu, const std::vector<Vec3> &u) override;
+  void shifted(const SolverSettings &s, std::vector<double> &mu, std::vector<Vec3> &u) override;
 
  private:
   // g(m) on the working set, leaving u = u(m)
@@ -27,7 +29,11 @@ class ApgdSolver : public IterativeSolver<Law> {
   double residual_ = 0.0;          // the set's residual at the iterate, from step()'s last pass
   bool residual_ready_ = false;
   // per row, kept between solves: no allocation per step (g(mu) is the base's g_)
-  std::vector<double> b_;       // g at mu = 0: the linear term of the dual
+  using IterativeSolver<Law>::B;
+  // b + the shift (friction) of row c's normal component
+  double linear(int c, int k) const;
+
+  std::vector<double> b_;       // g at mu = 0 without shifts: the linear term of the dual
   std::vector<double> y_;       // extrapolated point
   std::vector<double> gy_;      // g at y (g is affine in mu, so no extra product)
   std::vector<double> next_;    // trial point
@@ -35,5 +41,6 @@ class ApgdSolver : public IterativeSolver<Law> {
 };
 
 using Apgd = ApgdSolver<NormalLaw>;
+using ApgdFriction = ApgdSolver<CoulombLaw>;
 
 }    // namespace hardcontact

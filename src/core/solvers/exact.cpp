@@ -104,7 +104,7 @@ SolveReport Exact::solve(const ContactProblem &p, const SolverSettings &s, Distr
   op.velocities(mu, u);
   std::vector<double> row_scale_of;
   report.speed_scale = row_scales(p, s.tol, ops, row_scale_of);
-  report.residual = residual<NormalLaw>(p, mu, u, row_scale_of, ops);
+  report.residual = residual<NormalLaw>(op, mu, u, row_scale_of);
   report.converged = report.converged && report.residual <= s.tol;
   return report;
 }

@@ -10,6 +10,8 @@
 #include "../solver.h"
 #include "../working_set.h"
 
+#include <algorithm>
+#include <cmath>
 #include <vector>
 
 namespace hardcontact {
@@ -21,11 +23,12 @@ class IterativeSolver : public Solver {
                     std::vector<double> &mu, std::vector<Vec3> &u) final
   {
     const int nc = p.n_contacts();
-    mu.resize(nc, 0.0);
-    for (double &m : mu) m = Law::project(m);    // a start outside the law is no contact force
-    g_.resize(nc);
+    mu.resize(static_cast<size_t>(B) * nc, 0.0);
+    for (int c = 0; c < nc; ++c) Law::project(&mu[static_cast<size_t>(B) * c], coef(p, c));
+    g_.resize(static_cast<size_t>(B) * nc);
     op_.bind(p, ops);
     set_.init(p, mu, s.tol, ops);
+    if constexpr (B > 1) start_shifts(mu, u);
     start(s, mu, u);
 
     SolveReport report;
@@ -34,6 +37,13 @@ class IterativeSolver : public Solver {
       report.residual = ops.max_all(set_residual(mu, u));
       const auto verdict = set_.check(k, report.residual, s.tol, p, mu, u, ops);
       if (verdict == Verdict::Converged) {
+        if constexpr (B > 1) {
+          // the problem solved had the last shifts: converged once they are its own
+          if (k < s.maxiter && update_shifts(s.tol)) {
+            shifted(s, mu, u);
+            continue;
+          }
+        }
         report.converged = true;
         break;
       }
@@ -43,18 +53,22 @@ class IterativeSolver : public Solver {
       if (!step(s, mu, u)) break;    // the method broke down: report the iterate
     }
     report.rho = rho_;
-    if (!report.converged) report.residual = residual<Law>(p, mu, u, set_.scales(), ops);
+    if (!report.converged) report.residual = residual<Law>(op_, mu, u, set_.scales());
     report.speed_scale = set_.speed_scale();
     return report;
   }
 
  protected:
   using Verdict = typename WorkingSet<Law>::Verdict;
+  static constexpr int B = Law::block;
+
+  static double coef(const ContactProblem &p, int c) { return law_coefficient<Law>(p, c); }
+  double coef(int c) const { return coef(op_.problem(), c); }
 
   // Once per solve, after the working set is made: u = u(mu), and the solver's own state.
   virtual void start(const SolverSettings &s, std::vector<double> &mu, std::vector<Vec3> &u)
   {
-    op_.velocities(set_.rows(), mu, u);
+    op_.template velocities<B>(set_.rows(), mu, u);
     rows_changed(s);
   }
   // One iteration from (mu, u = u(mu)) to the next; false if the method broke down.
@@ -66,14 +80,21 @@ class IterativeSolver : public Solver {
   }
   // The working set is new or larger: what depends on its rows (step bounds) is out of date.
   virtual void rows_changed(const SolverSettings &) {}
+  // The shifts changed (friction): g_ holds the new gradient at (mu, u); the linear term of
+  // the dual moved by the same amount.
+  virtual void shifted(const SolverSettings &s, std::vector<double> &, std::vector<Vec3> &)
+  {
+    rows_changed(s);
+  }
   // This process's largest violation over the working set at (mu, u); by default from the
   // gaps of u, which it leaves in g_ for the next step.
   virtual double set_residual(const std::vector<double> &mu, const std::vector<Vec3> &u)
   {
     double r = 0.0;
     for (const int c : set_.rows()) {
-      g_[c] = op_.gap(c, u);
-      const double v = set_.violation(c, g_[c], mu[c]);
+      const size_t at = static_cast<size_t>(B) * c;
+      op_.template gap_block<B>(c, u, &g_[at]);
+      const double v = set_.violation(c, &g_[at], &mu[at], coef(c));
       r = r > v ? r : v;
     }
     return r;
@@ -83,6 +104,39 @@ class IterativeSolver : public Solver {
   WorkingSet<Law> set_;
   std::vector<double> g_;    // g(mu) on the working set; kept between solves (no allocation)
   double rho_ = 0.0;         // the step the method used, reported (0: none)
+
+ private:
+  // Friction's normal shifts s_c = coef |g_t| (laws/coulomb.h) from the start multipliers.
+  void start_shifts(const std::vector<double> &mu, std::vector<Vec3> &u)
+  {
+    op_.template velocities<B>(set_.rows(), mu, u);
+    std::vector<double> &shift = op_.shift();
+    double g[B];
+    for (const int c : set_.rows()) {
+      op_.template gap_block<B>(c, u, g);
+      shift[c] = coef(c) * std::hypot(g[1], g[2]);
+    }
+  }
+  // The shifts of the current iterate (g_ at u(mu)); true if any moved by more than tol of its
+  // row scale, in which case they and g_ are updated.
+  bool update_shifts(double tol)
+  {
+    std::vector<double> &shift = op_.shift();
+    double worst = 0.0;
+    for (const int c : set_.rows()) {
+      const double *g = &g_[static_cast<size_t>(B) * c];
+      worst = std::max(worst, std::abs(coef(c) * std::hypot(g[1], g[2]) - shift[c]) /
+                                  set_.scale(c));
+    }
+    if (!(op_.ops().max_all(worst) > tol)) return false;
+    for (const int c : set_.rows()) {
+      double *g = &g_[static_cast<size_t>(B) * c];
+      const double next = coef(c) * std::hypot(g[1], g[2]);
+      g[0] += next - shift[c];
+      shift[c] = next;
+    }
+    return true;
+  }
 };
 
 }    // namespace hardcontact

@@ -10,6 +10,7 @@
 // Each sweep decreases the dual objective; ghost velocities are refreshed after each sweep.
 #pragma once
 
+#include "../laws/coulomb.h"
 #include "../laws/normal.h"
 #include "iterative_solver.h"
 
@@ -18,6 +19,7 @@ namespace hardcontact {
 template <class Law>
 class PgsSolver : public IterativeSolver<Law> {
  protected:
+  using IterativeSolver<Law>::B;
   // row degrees for the Gershgorin step of the boundary rows
   void rows_changed(const SolverSettings &) override { this->op_.count_degrees(this->set_.rows()); }
   bool step(const SolverSettings &s, std::vector<double> &mu, std::vector<Vec3> &u) override;
@@ -27,5 +29,6 @@ class PgsSolver : public IterativeSolver<Law> {
 };
 
 using Pgs = PgsSolver<NormalLaw>;
+using PgsFriction = PgsSolver<CoulombLaw>;
 
 }    // namespace hardcontact

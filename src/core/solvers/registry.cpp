@@ -10,21 +10,35 @@ namespace hardcontact {
 namespace {
 struct Entry {
   const char *name;
-  std::unique_ptr<Solver> (*create)();
+  std::unique_ptr<Solver> (*create)();             // the paper's law (laws/normal.h)
+  std::unique_ptr<Solver> (*create_friction)();    // Coulomb's (laws/coulomb.h); null: none
 };
 const Entry registry[] = {
-    {"uzawa", [] { return std::unique_ptr<Solver>(new Uzawa()); }},
-    {"apgd", [] { return std::unique_ptr<Solver>(new Apgd()); }},
-    {"pgs", [] { return std::unique_ptr<Solver>(new Pgs()); }},
-    {"exact", [] { return std::unique_ptr<Solver>(new Exact()); }},
+    {"uzawa", [] { return std::unique_ptr<Solver>(new Uzawa()); },
+     [] { return std::unique_ptr<Solver>(new UzawaFriction()); }},
+    {"apgd", [] { return std::unique_ptr<Solver>(new Apgd()); },
+     [] { return std::unique_ptr<Solver>(new ApgdFriction()); }},
+    {"pgs", [] { return std::unique_ptr<Solver>(new Pgs()); },
+     [] { return std::unique_ptr<Solver>(new PgsFriction()); }},
+    {"exact", [] { return std::unique_ptr<Solver>(new Exact()); }, nullptr},
 };
 }    // namespace
 
-std::unique_ptr<Solver> make_solver(const std::string &name)
+std::unique_ptr<Solver> make_solver(const std::string &name, bool friction)
+{
+  for (const Entry &e : registry) {
+    if (name != e.name) continue;
+    if (!friction) return e.create();
+    return e.create_friction ? e.create_friction() : nullptr;
+  }
+  return nullptr;
+}
+
+bool solver_has_friction(const std::string &name)
 {
   for (const Entry &e : registry)
-    if (name == e.name) return e.create();
-  return nullptr;
+    if (name == e.name) return e.create_friction != nullptr;
+  return false;
 }
 
 std::vector<std::string> solver_names()

@@ -12,7 +12,7 @@ void UzawaSolver<Law>::rows_changed(const SolverSettings &s)
     this->rho_ = s.rho;
     return;
   }
-  const double bound = this->op_.bound(this->set_.rows());
+  const double bound = this->op_.template bound<B>(this->set_.rows());
   this->rho_ = bound > 0.0 ? 1.0 / bound : 0.0;
 }
 
@@ -22,11 +22,17 @@ template <class Law>
 bool UzawaSolver<Law>::step(const SolverSettings &, std::vector<double> &mu,
                             std::vector<Vec3> &u)
 {
-  for (const int c : this->set_.rows()) mu[c] = Law::project(mu[c] - this->rho_ * this->g_[c]);
-  this->op_.velocities(this->set_.rows(), mu, u);
+  for (const int c : this->set_.rows()) {
+    double *m = &mu[static_cast<size_t>(B) * c];
+    const double *g = &this->g_[static_cast<size_t>(B) * c];
+    for (int k = 0; k < B; ++k) m[k] -= this->rho_ * g[k];
+    Law::project(m, this->coef(c));
+  }
+  this->op_.template velocities<B>(this->set_.rows(), mu, u);
   return true;
 }
 
 template class UzawaSolver<NormalLaw>;
+template class UzawaSolver<CoulombLaw>;
 
 }    // namespace hardcontact

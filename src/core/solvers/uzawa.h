@@ -2,6 +2,7 @@
 // iterating on a working set of rows (Remark 7, working_set.h).
 #pragma once
 
+#include "../laws/coulomb.h"
 #include "../laws/normal.h"
 #include "iterative_solver.h"
 
@@ -10,11 +11,13 @@ namespace hardcontact {
 template <class Law>
 class UzawaSolver : public IterativeSolver<Law> {
  protected:
+  using IterativeSolver<Law>::B;
   // rho from the Gershgorin bound of the working set (or the user's)
   void rows_changed(const SolverSettings &s) override;
   bool step(const SolverSettings &s, std::vector<double> &mu, std::vector<Vec3> &u) override;
 };
 
 using Uzawa = UzawaSolver<NormalLaw>;
+using UzawaFriction = UzawaSolver<CoulombLaw>;
 
 }    // namespace hardcontact

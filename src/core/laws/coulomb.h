@@ -1,0 +1,60 @@
+// Coulomb friction as a cone complementarity law: per contact the normal force and two
+// tangential components, m = (m_n, m_t) in the cone K = {|m_t| <= coef m_n}. The dual of the
+// paper's projection (section 3.3) keeps its form with G extended by the tangential rows of
+// the contact points' relative velocity (rotations through the arms, contact_problem.h):
+// minimise 1/2 m.A m + b.m over K, gradient g = (gap, h v_t) in displacement units.
+//
+// Its optimality (m in K, g in the dual cone, m.g = 0) alone would make a sliding contact
+// separate by h coef |v_t| per step (the convex relaxation). De Saxce's bipotential removes
+// it: the normal target is shifted by s = coef |g_t| (DualOperator::shift), and s is brought to
+// a fixed point by the solver (IterativeSolver), so that a sliding contact has g_n = 0 and
+// the contact does the work -coef m_n |v_t| <= 0.
+#pragma once
+
+#include <cmath>
+
+namespace hardcontact {
+
+struct CoulombLaw {
+  static constexpr int block = 3;
+
+  // Euclidean projection onto K: itself inside, 0 in the polar cone (coef |t| <= -n), else
+  // onto the cone's surface along the normal of the boundary.
+  static void project(double *m, double coef)
+  {
+    const double n = m[0];
+    const double t = std::hypot(m[1], m[2]);
+    if (t <= coef * n) return;
+    if (coef * t <= -n) {
+      m[0] = m[1] = m[2] = 0.0;
+      return;
+    }
+    const double a = (n + coef * t) / (1.0 + coef * coef);
+    const double f = coef * a / t;
+    m[0] = a;
+    m[1] *= f;
+    m[2] *= f;
+  }
+
+  // g = (g_n + s, g_t): the shifted gap and the tangential displacement of the step.
+  // No force: g must lie in the dual cone (g_n >= coef |g_t|; with s at its fixed point, the
+  // real gap >= 0). A pushing contact: stick (|m_t| < coef m_n) asks g_t = 0 and g_n = 0;
+  // slide asks g_t against m_t and g_n = coef |g_t|. With q = m_t / (coef m_n) both read
+  //   d_t = g_t + |g_t| q = 0,   d_n = g_n - coef |g_t| |q| = 0.
+  static double violation(const double *g, const double *m, double coef, double scale)
+  {
+    const double gt = std::hypot(g[1], g[2]);
+    if (m[0] <= 0.0) {
+      const double v = coef * gt - g[0];
+      return (v > 0.0 ? v : 0.0) / scale;
+    }
+    const double cap = coef * m[0];
+    if (cap <= 0.0) return std::abs(g[0]) / scale;    // frictionless row: the normal law
+    const double q1 = m[1] / cap, q2 = m[2] / cap;
+    const double dn = std::abs(g[0] - coef * gt * std::hypot(q1, q2));
+    const double dt = std::hypot(g[1] + gt * q1, g[2] + gt * q2);
+    return (dn > dt ? dn : dt) / scale;
+  }
+};
+
+}    // namespace hardcontact

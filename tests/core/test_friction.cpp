@@ -1,0 +1,179 @@
+// Coulomb friction (laws/coulomb.h) in the core, against analytic single-step outcomes:
+//  - a sphere sliding on a floor loses mu g h of speed per step and spins up by
+//    5 mu g h / (2 r), with no lift-off (De Saxce's shift at its fixed point);
+//  - a slow sphere sticks: it leaves the step rolling at 5/7 of its speed;
+//  - an oblique pair: tangential impulse <= mu x normal impulse, sticking below and sliding
+//    above the analytic threshold v_t / v_n = 7/2 mu; linear and angular momentum exact;
+//  - random packings: apgd, pgs and uzawa agree, kinetic energy (spins included) never grows,
+//    no overlap, every multiplier in its cone.
+#include "core_test_util.h"
+#include "random_config.h"
+
+#include "solver.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace {
+
+using hardcontact::ContactProblem;
+using hardcontact::SerialOps;
+using hardcontact::SolverSettings;
+using hardcontact::Vec3;
+
+// Spheres of the problem get I = 2/5 m r^2, spin w_free, and every row the coefficient mu.
+void add_friction(ContactProblem &p, const std::vector<double> &r, double mu,
+                  const std::vector<Vec3> &w_free = {})
+{
+  const int n = p.n_bodies();
+  p.radius = r;
+  p.inv_inertia.resize(n);
+  for (int b = 0; b < n; ++b) p.inv_inertia[b] = p.inv_mass[b] / (0.4 * r[b] * r[b]);
+  p.w_free = w_free.empty() ? std::vector<Vec3>(n, Vec3::Zero()) : w_free;
+  p.friction.assign(p.n_contacts(), mu);
+  p.complete_frames(0);
+}
+
+struct Solved {
+  std::vector<double> mu;
+  std::vector<Vec3> u;
+  hardcontact::SolveReport report;
+};
+
+Solved solve(const ContactProblem &p, const std::string &name, double tol = 1e-8)
+{
+  auto solver = hardcontact::make_solver(name, true);
+  EXPECT_TRUE(solver) << name;
+  SerialOps ops;
+  SolverSettings s;
+  s.tol = tol;
+  s.maxiter = 200000;
+  Solved out;
+  out.report = solver->solve(p, s, ops, out.mu, out.u);
+  if (getenv("HC_VERBOSE")) printf("%s it %d res %g\n", name.c_str(), out.report.iterations, out.report.residual);
+  EXPECT_TRUE(out.report.converged) << name << " residual " << out.report.residual;
+  return out;
+}
+
+// One sphere of mass 1, radius r on the floor z = 0, moving along x at v0 with no spin.
+ContactProblem sphere_on_floor(double v0, double mu, double h, double g, double r)
+{
+  ContactProblem p = hctest::make_problem(h, {1.0}, {Vec3(v0, 0.0, -g * h)});
+  hctest::add_wall(p, 0, Vec3(0.0, 0.0, r), r, Vec3::Zero(), Vec3(0.0, 0.0, 1.0));
+  add_friction(p, {r}, mu);
+  return p;
+}
+
+TEST(Friction, SlidingSphereDeceleratesAndSpinsUp)
+{
+  const double h = 0.01, g = 1.0, r = 0.5, mu = 0.3, v0 = 1.0;
+  for (const char *name : {"apgd", "pgs", "uzawa"}) {
+    const ContactProblem p = sphere_on_floor(v0, mu, h, g, r);
+    const Solved s = solve(p, name);
+    const Vec3 u = s.u[0], w = s.u[1];
+    EXPECT_NEAR(u.z(), 0.0, 1e-9) << name;                        // no lift-off, no sinking
+    EXPECT_NEAR(s.mu[0], g, 1e-7) << name;                        // normal force m g
+    EXPECT_NEAR(u.x(), v0 - mu * g * h, 1e-9) << name;            // Coulomb: mu m g
+    EXPECT_NEAR(w.y(), 5.0 * mu * g * h / (2.0 * r), 1e-8) << name;
+    EXPECT_NEAR(u.y(), 0.0, 1e-12) << name;
+    EXPECT_NEAR(std::hypot(s.mu[1], s.mu[2]), mu * s.mu[0], 1e-9) << name;
+  }
+}
+
+TEST(Friction, SlowSphereSticksAndRolls)
+{
+  const double h = 0.01, g = 1.0, r = 0.5, mu = 0.5;
+  const double v0 = 0.5 * 3.5 * mu * g * h;    // half the speed one step of friction can stop
+  for (const char *name : {"apgd", "pgs", "uzawa"}) {
+    const ContactProblem p = sphere_on_floor(v0, mu, h, g, r);
+    const Solved s = solve(p, name, 1e-10);
+    EXPECT_NEAR(s.u[0].x(), 5.0 / 7.0 * v0, 1e-9) << name;
+    EXPECT_NEAR(s.u[1].y() * r, s.u[0].x(), 1e-9) << name;    // rolling: no slip
+    EXPECT_LT(std::hypot(s.mu[1], s.mu[2]), mu * s.mu[0]) << name;
+  }
+}
+
+// Two equal spheres touching along x; sphere 0 moves at (vn, vt) against sphere 1 at rest.
+TEST(Friction, ObliquePairStickBelowSlideAboveThreshold)
+{
+  const double h = 0.05, r = 0.5, mu = 0.4, vn = 1.0;
+  for (const double ratio : {0.5, 2.0}) {    // v_t / v_n against the threshold 7/2 mu
+    const double vt = ratio * 3.5 * mu * vn;
+    const std::vector<Vec3> q = {Vec3::Zero(), Vec3(2 * r, 0.0, 0.0)};
+    ContactProblem p =
+        hctest::make_problem(h, {1.0, 1.0}, {Vec3(vn, vt, 0.0), Vec3::Zero()});
+    hctest::add_pair(p, 0, 1, q[0], q[1], r, r);
+    add_friction(p, {r, r}, mu);
+    for (const char *name : {"apgd", "pgs", "uzawa"}) {
+      const Solved s = solve(p, name, 1e-10);
+      const double jn = s.mu[0], jt = std::hypot(s.mu[1], s.mu[2]);
+      EXPECT_NEAR(jn * h, 0.5 * vn, 1e-9) << name;    // inelastic: m_red v_n
+      EXPECT_LE(jt, mu * jn * (1.0 + 1e-9)) << name;
+      const Vec3 slip = p.slip_velocity(0, s.u);
+      if (ratio < 1.0) {
+        EXPECT_NEAR(jt * h, vt / 7.0, 1e-9) << name;    // sticks: slip stopped
+        EXPECT_NEAR(slip.y(), 0.0, 1e-9) << name;
+      } else {
+        EXPECT_NEAR(jt, mu * jn, 1e-9 * jn) << name;    // slides: on the cone
+        EXPECT_LT(slip.y(), 0.0) << name;    // slip v_j - v_i keeps its sign
+      }
+      // momentum and angular momentum about the origin (I w + m x cross v)
+      const Vec3 P = s.u[0] + s.u[1];
+      EXPECT_NEAR((P - Vec3(vn, vt, 0.0)).norm(), 0.0, 1e-13) << name;
+      const double I = 0.4 * r * r;
+      const Vec3 L = q[0].cross(s.u[0]) + q[1].cross(s.u[1]) + I * (s.u[2] + s.u[3]);
+      EXPECT_NEAR((L - q[0].cross(Vec3(vn, vt, 0.0))).norm(), 0.0, 1e-13) << name;
+    }
+  }
+}
+
+double kinetic2(const ContactProblem &p, const std::vector<Vec3> &u)
+{
+  const int n = p.n_bodies();
+  double e = 0.0;
+  for (int b = 0; b < n; ++b) {
+    e += u[b].squaredNorm() / p.inv_mass[b];
+    e += u[n + b].squaredNorm() / p.inv_inertia[b];
+  }
+  return e;
+}
+
+TEST(Friction, SolversAgreeOnRandomPackings)
+{
+  const double tol = getenv("HC_TOL") ? atof(getenv("HC_TOL")) : 1e-7;
+  for (unsigned seed : {3u, 11u}) {
+    hctest::RandomConfigOptions o;
+    o.n = 60;
+    o.box = 6.0;
+    o.mass_decades = 1.0;
+    hctest::RandomConfig c = hctest::random_config(seed, o);
+    std::vector<Vec3> w(c.p.n_bodies());
+    for (int b = 0; b < c.p.n_bodies(); ++b) w[b] = Vec3(std::sin(b), std::cos(3 * b), 0.5);
+    add_friction(c.p, c.r, 0.5, w);
+    std::vector<Vec3> u_free(c.p.u_free);
+    u_free.insert(u_free.end(), w.begin(), w.end());
+    const double e_free = kinetic2(c.p, u_free);
+    const Solved a = solve(c.p, "apgd", tol);
+    for (const char *name : {"apgd", "pgs", "uzawa"}) {
+      const Solved s = solve(c.p, name, tol);
+      EXPECT_LE(kinetic2(c.p, s.u), e_free * (1.0 + 1e-12)) << name;
+      double worst = 0.0;
+      for (size_t d = 0; d < s.u.size(); ++d) worst = std::max(worst, (s.u[d] - a.u[d]).norm());
+      EXPECT_LT(worst, 1e-5) << name << " seed " << seed;
+      for (int r = 0; r < c.p.n_contacts(); ++r) {
+        EXPECT_GE(c.p.predicted_gap(r, s.u), -tol * c.p.size[r]) << name;    // the row scale
+        EXPECT_LE(std::hypot(s.mu[3 * r + 1], s.mu[3 * r + 2]), 0.5 * s.mu[3 * r] * (1 + 1e-12) + 1e-300) << s.mu[3 * r];
+      }
+    }
+  }
+}
+
+TEST(Friction, ExactSolverHasNoFriction)
+{
+  EXPECT_FALSE(hardcontact::make_solver("exact", true));
+  EXPECT_FALSE(hardcontact::solver_has_friction("exact"));
+  EXPECT_TRUE(hardcontact::solver_has_friction("apgd"));
+}
+
+}    // namespace
