@@ -30,7 +30,16 @@ void ContactHistory::load(const ContactProblem &p, const LAMMPS_NS::tagint *tag,
   mu.assign(static_cast<size_t>(k_) * nc, 0.0);
   for (int c = 0; c < nc; ++c) {
     const double *v = find(p.body_i[c], partner_key(p, tag, c));
-    if (v) std::copy(v, v + k_, &mu[static_cast<size_t>(k_) * c]);
+    if (!v) continue;
+    double *m = &mu[static_cast<size_t>(k_) * c];
+    if (k_ != 3) {
+      std::copy(v, v + k_, m);
+      continue;
+    }
+    const Vec3 on_j = -Vec3(v[0], v[1], v[2]);    // body i kept the force on itself
+    m[0] = on_j.dot(p.normal[c]);
+    m[1] = on_j.dot(p.tangent1[c]);
+    m[2] = on_j.dot(p.tangent2[c]);
   }
 }
 
@@ -43,8 +52,19 @@ void ContactHistory::store(const ContactProblem &p, const LAMMPS_NS::tagint *tag
     const double *v = &mu[static_cast<size_t>(k_) * c];
     if (v[0] <= 0.0) continue;    // an open contact starts the next step from 0
     const int i = p.body_i[c], j = p.body_j[c];
-    if (i < p.n_owned) add(i, partner_key(p, tag, c), v);
-    if (!is_wall(j) && j < p.n_owned) add(j, static_cast<double>(tag[i]), v);
+    const double *on_i = v, *on_j = v;
+    double vec[2][3];
+    if (k_ == 3) {
+      const Vec3 f = v[0] * p.normal[c] + v[1] * p.tangent1[c] + v[2] * p.tangent2[c];
+      for (int d = 0; d < 3; ++d) {
+        vec[0][d] = -f[d];
+        vec[1][d] = f[d];
+      }
+      on_i = vec[0];
+      on_j = vec[1];
+    }
+    if (i < p.n_owned) add(i, partner_key(p, tag, c), on_i);
+    if (!is_wall(j) && j < p.n_owned) add(j, static_cast<double>(tag[i]), on_j);
   }
 }
 

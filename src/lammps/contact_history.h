@@ -3,7 +3,10 @@
 // and restart files. Atom i keeps (partner, k values) for each of its active contacts:
 // partner = atom ID of the other sphere, or the row's wall code j < 0 (contact_source.h).
 // Both atoms of a pair keep the entry, so each of the two processes that hold a pair across
-// processors finds the same values. k = the law's block size (1: the normal force).
+// processors finds the same values. k = the law's block size: 1, the normal force; 3 with
+// friction, kept as the force on the storing atom in the box frame (the partner keeps its
+// negation), so that the values survive a new tangent frame or a row seen from the other
+// atom (i and j swapped) and are read back as components in the row's frame.
 #pragma once
 
 #include "../core/contact_problem.h"
@@ -30,7 +33,8 @@ class ContactHistory {
 
   int values_per_contact() const { return k_; }
 
-  // Start values of the rows: mu[k_ c + m] = value m stored for row c's pair, 0 if none.
+  // Start values of the rows: mu[k_ c + m] = value m stored for row c's pair, 0 if none
+  // (with friction: in the frame normal, tangent1, tangent2 of row c, which must be set).
   void load(const ContactProblem &p, const LAMMPS_NS::tagint *tag,
             std::vector<double> &mu) const;
   // Replaces the owned atoms' entries by the rows with a non-zero first value.

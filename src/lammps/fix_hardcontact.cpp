@@ -11,6 +11,7 @@
 #include "update.h"
 #include "utils.h"
 
+#include "../core/laws/coulomb.h"
 #include "../core/laws/normal.h"
 
 using namespace LAMMPS_NS;
@@ -26,23 +27,37 @@ hardcontact::FixOptions checked_options(LAMMPS *lmp, int narg, char **arg)
         FLERR, "Fix hardcontact requires atom attributes radius and rmass: use atom_style sphere");
   if (!lmp->atom->tag_enable)
     lmp->error->all(FLERR, "Fix hardcontact requires atom IDs: remove 'atom_modify id no'");
-  return hardcontact::parse_keywords(lmp, narg, arg, 3);
+  hardcontact::FixOptions o = hardcontact::parse_keywords(lmp, narg, arg, 3);
+  if (o.has_friction()) {
+    if (!lmp->atom->omega_flag || !lmp->atom->torque_flag)
+      lmp->error->all(FLERR, "Fix hardcontact friction requires atom attributes omega and "
+                             "torque (the spheres spin): use atom_style sphere");
+    if (!hardcontact::solver_has_friction(o.solver_name))
+      lmp->error->all(FLERR, "Fix hardcontact solver {} has no friction: use apgd, pgs or "
+                             "uzawa with friction", o.solver_name);
+  }
+  return o;
 }
 
-const int HISTORY_VALUES = hardcontact::NormalLaw::block;    // per contact: the law's multipliers
+// per contact: the law's multipliers (normal force; with friction its three components)
+int history_values(const hardcontact::FixOptions &o)
+{
+  return o.has_friction() ? hardcontact::CoulombLaw::block : hardcontact::NormalLaw::block;
+}
 
 }    // namespace
 
 FixHardContact::FixHardContact(LAMMPS *lmp, int narg, char **arg) :
     Fix(lmp, narg, arg), options_(checked_options(lmp, narg, arg)),
-    solver_(hardcontact::make_solver(options_.solver_name)), reach_(lmp), pairs_(lmp, groupbit),
+    solver_(hardcontact::make_solver(options_.solver_name, options_.has_friction())), reach_(lmp), pairs_(lmp, groupbit),
     walls_(lmp, groupbit, std::move(options_.walls), std::move(options_.wall_variables)),
     regions_(lmp, groupbit, std::move(options_.wall_regions)), obstacles_(walls_, regions_),
-    history_(memory, HISTORY_VALUES),
+    history_(memory, history_values(options_)),
     step_(lmp, groupbit, ops_, reach_, {&pairs_, &walls_, &regions_}), integrate_(lmp, groupbit),
-    outputs_(lmp, this)
+    outputs_(lmp, this, options_.has_friction())
 {
   walls_.check_in_box();
+  integrate_.set_inertia(options_.disc ? 0.5 : 0.4);
 
   time_integrate = 1;
   force_reneighbor = 1;    // rebuilds are forced before a step could outrun the skin
@@ -54,12 +69,12 @@ FixHardContact::FixHardContact(LAMMPS *lmp, int narg, char **arg) :
   extvector = 0;    // already reduced over processes
 
   peratom_flag = 1;
-  size_peratom_cols = hardcontact::Outputs::kPerAtomColumns;
+  size_peratom_cols = outputs_.per_atom_columns();
   peratom_freq = 1;
 
   local_flag = 1;
   size_local_rows = 0;
-  size_local_cols = hardcontact::Outputs::kLocalColumns;
+  size_local_cols = outputs_.local_columns();
   local_freq = 1;
 
   comm_forward = hardcontact::LammpsOps::kMaxPerBody;
@@ -139,13 +154,18 @@ void FixHardContact::initial_integrate(int)
   effects.bounce_vmin = options_.bounce_vmin;
   effects.wall_velocity = walls_.advance(update->dt);
   effects.cohesion = &options_.cohesion;
+  if (options_.has_friction()) {
+    effects.friction = &options_.friction;
+    effects.inertia = options_.disc ? 0.5 : 0.4;
+  }
   const hardcontact::StepResult result =
       step_.solve(*solver_, options_.settings, options_.warmstart ? &history_ : nullptr, effects);
   walls_.commit(update->dt);    // the outputs measure q^{n+1} against the walls at t^{n+1}
   if (options_.warmstart) history_resized();
-  outputs_.record_step(result, step_.problem(), step_.mu(), step_.u(), obstacles_,
-                       options_.settings);
-  if (integrate_.move(step_.u())) next_reneighbor = update->ntimestep;
+  outputs_.record_step(result, step_.problem(), step_.mu(), step_.block(), step_.u(),
+                       obstacles_, options_.settings);
+  const int spins = step_.block() > 1 ? step_.problem().n_bodies() : -1;
+  if (integrate_.move(step_.u(), spins)) next_reneighbor = update->ntimestep;
 }
 
 void FixHardContact::post_run()
@@ -168,7 +188,7 @@ double FixHardContact::memory_usage()
 // What an atom carries when it migrates: its outputs, then its contact history.
 void FixHardContact::history_resized()
 {
-  maxexchange = hardcontact::Outputs::kPerAtomColumns + history_.max_packed_size();
+  maxexchange = outputs_.per_atom_columns() + history_.max_packed_size();
 }
 
 void FixHardContact::grow_arrays(int nmax)
@@ -180,7 +200,7 @@ void FixHardContact::grow_arrays(int nmax)
 
 void FixHardContact::copy_arrays(int i, int j, int)
 {
-  const int n = hardcontact::Outputs::kPerAtomColumns;
+  const int n = outputs_.per_atom_columns();
   for (int k = 0; k < n; ++k) array_atom[j][k] = array_atom[i][k];
   history_.copy(i, j);
 }
@@ -193,14 +213,14 @@ void FixHardContact::set_arrays(int i)
 
 int FixHardContact::pack_exchange(int i, double *buf)
 {
-  const int n = hardcontact::Outputs::kPerAtomColumns;
+  const int n = outputs_.per_atom_columns();
   for (int k = 0; k < n; ++k) buf[k] = array_atom[i][k];
   return n + history_.pack(i, buf + n);
 }
 
 int FixHardContact::unpack_exchange(int nlocal, double *buf)
 {
-  const int n = hardcontact::Outputs::kPerAtomColumns;
+  const int n = outputs_.per_atom_columns();
   for (int k = 0; k < n; ++k) array_atom[nlocal][k] = buf[k];
   return n + history_.unpack(nlocal, buf + n);
 }

@@ -11,8 +11,6 @@ using namespace LAMMPS_NS;
 namespace hardcontact {
 namespace {
 
-const double SPHERE_INERTIA = 0.4;    // I = 0.4 m r^2, as fix nve/sphere
-
 // What the skin test needs of all processes' atoms, reduced in one message.
 struct Moves {
   double now[2];      // two largest displacements since the build (of distinct atoms)
@@ -68,14 +66,14 @@ void Integrate::store_build_positions()
 // least r_i + r_j + skin apart at the last build, so it cannot overlap while the two atoms
 // together have moved less than the skin since (d_i + d_j < skin). A rebuild is forced as soon
 // as the next step could break that even if speeds doubled (gravity, collisions).
-bool Integrate::move(const std::vector<Vec3> &u)
+bool Integrate::move(const std::vector<Vec3> &u, int spins)
 {
   const int nlocal = atom->nlocal;
   double **x = atom->x, **v = atom->v, **omega = atom->omega, **torque = atom->torque;
   double *rmass = atom->rmass, *radius = atom->radius;
   int *mask = atom->mask;
   const double dt = update->dt;
-  const double dtfrot = dt * force->ftm2v / SPHERE_INERTIA;
+  const double dtfrot = dt * force->ftm2v / inertia_;
 
   Moves mine = {{0.0, 0.0}, {0.0, 0.0}, 0.0};
   for (int i = 0; i < nlocal; ++i) {
@@ -85,7 +83,9 @@ bool Integrate::move(const std::vector<Vec3> &u)
       x[i][k] += dt * u[i][k];
     }
     // Frictionless contacts exert no torque: spins change only by external torques.
-    if (omega && torque) {
+    if (spins >= 0) {
+      for (int k = 0; k < 3; ++k) omega[i][k] = u[spins + i][k];
+    } else if (omega && torque) {
       const double s = dtfrot / (rmass[i] * radius[i] * radius[i]);
       for (int k = 0; k < 3; ++k) omega[i][k] += s * torque[i][k];
     }

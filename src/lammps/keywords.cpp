@@ -169,6 +169,23 @@ void parse_cohesion(LAMMPS *lmp, char **values, int n, FixOptions &o)
   set_pair_values(lmp, values, n, f, o.cohesion);
 }
 
+void parse_friction(LAMMPS *lmp, char **values, int n, FixOptions &o)
+{
+  const double mu = number(lmp, "friction", values[0]);
+  if (mu < 0.0)
+    lmp->error->all(FLERR, "Fix hardcontact friction must be a Coulomb coefficient >= 0 "
+                           "(0: frictionless), got {}", values[0]);
+  set_pair_values(lmp, values, n, mu, o.friction);
+}
+
+void parse_disc(LAMMPS *lmp, char **, int, FixOptions &o)
+{
+  if (lmp->domain->dimension != 2)
+    lmp->error->all(FLERR, "Fix hardcontact disc requires 'dimension 2' (discs spin as "
+                           "cylinders): remove disc in 3d");
+  o.disc = true;
+}
+
 void parse_bounce(LAMMPS *lmp, char **values, int, FixOptions &o)
 {
   o.bounce_vmin = number(lmp, "bounce", values[0]);
@@ -192,6 +209,10 @@ const Keyword keywords[] = {
     {"cohesion", 1, 2, parse_cohesion,
      "cohesion F [I J]: a touching contact holds up to F of pull, for type pairs I J (all: "
      "default)"},
+    {"friction", 1, 2, parse_friction,
+     "friction mu [I J]: Coulomb friction coefficient >= 0 for type pairs I J (all: default); "
+     "walls use the value of the atom's type with itself"},
+    {"disc", 0, 0, parse_disc, "disc: 2d discs, moment of inertia 1/2 m r^2"},
 };
 
 bool is_keyword(const char *word)

@@ -27,6 +27,17 @@ struct FixOptions {
   double bounce_vmin = 0.0;
   // cohesion F per type pair, (ntypes + 1)^2 row-major; empty: none
   std::vector<double> cohesion;
+  // Coulomb coefficient per type pair, (ntypes + 1)^2 row-major; empty or all 0: frictionless
+  // (the normal law alone, as if the keyword were absent)
+  std::vector<double> friction;
+  bool disc = false;    // 2d discs: I = 1/2 m r^2 (as fix nve/sphere disc), else 2/5 m r^2
+
+  bool has_friction() const
+  {
+    for (const double mu : friction)
+      if (mu > 0.0) return true;
+    return false;
+  }
 };
 
 // Parses arg[first..narg-1]; stops with an error that names the keyword and what to write.

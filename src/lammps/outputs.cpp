@@ -23,8 +23,8 @@ Outputs::~Outputs()
 
 double Outputs::memory_usage() const
 {
-  double bytes = kPerAtomColumns * sizeof(double) * atom->nmax;
-  bytes += kLocalColumns * sizeof(double) * nlocal_rows_max_;
+  double bytes = per_atom_columns() * sizeof(double) * atom->nmax;
+  bytes += local_columns() * sizeof(double) * nlocal_rows_max_;
   return bytes;
 }
 
@@ -32,12 +32,12 @@ double Outputs::memory_usage() const
 // initial_integrate, before the exchange of the same step).
 void Outputs::grow_per_atom(int nmax)
 {
-  memory->grow(fix_->array_atom, nmax, kPerAtomColumns, "hardcontact:array_atom");
+  memory->grow(fix_->array_atom, nmax, per_atom_columns(), "hardcontact:array_atom");
 }
 
 void Outputs::clear_per_atom(int i)
 {
-  for (int k = 0; k < kPerAtomColumns; ++k) fix_->array_atom[i][k] = 0.0;
+  for (int k = 0; k < per_atom_columns(); ++k) fix_->array_atom[i][k] = 0.0;
 }
 
 void Outputs::start_of_run(const ContactProblem &p, const WallGaps &walls,
@@ -45,7 +45,7 @@ void Outputs::start_of_run(const ContactProblem &p, const WallGaps &walls,
 {
   overlap_diagnostics(p, nullptr, 0.0, walls);
   diag_[ITERATIONS] = diag_[CANDIDATES] = diag_[ACTIVE] = diag_[RESIDUAL] = 0.0;
-  diag_[RHO] = diag_[ROUNDS] = diag_[CLEARING_WORK] = 0.0;
+  diag_[RHO] = diag_[ROUNDS] = diag_[CLEARING_WORK] = diag_[FRICTION_WORK] = 0.0;
   diag_[MAXITER_HITS] = static_cast<double>(maxiter_hits_);
   if (diag_[MAX_OVERLAP_RELATIVE] > tol && comm->me == 0)
     error->warning(FLERR, "Fix hardcontact: the run starts with overlapping spheres (largest "
@@ -58,11 +58,11 @@ void Outputs::start_of_run(const ContactProblem &p, const WallGaps &walls,
 }
 
 void Outputs::record_step(const StepResult &r, const ContactProblem &p,
-                          const std::vector<double> &mu, const std::vector<Vec3> &u,
+                          const std::vector<double> &mu, int block, const std::vector<Vec3> &u,
                           const WallGaps &walls, const SolverSettings &settings)
 {
   record_solve(r, settings);
-  per_atom_and_local(p, mu);
+  per_atom_and_local(p, mu, block, u);
   overlap_diagnostics(p, &u, update->dt, walls);
 }
 
@@ -98,52 +98,72 @@ void Outputs::end_of_run(const SolverSettings &settings)
 
 // A row is counted once over all processes (ContactProblem::counted): a pair across processes
 // is held by both, and counted by the side whose atom has the smaller ID.
-void Outputs::per_atom_and_local(const ContactProblem &p, const std::vector<double> &mu)
+void Outputs::per_atom_and_local(const ContactProblem &p, const std::vector<double> &mu,
+                                 int block, const std::vector<Vec3> &u)
 {
   const int nlocal = atom->nlocal;
   const int nc = p.n_contacts();
   double **array_atom = fix_->array_atom;
-  contact_forces(p, mu, force_);
+  if (block == 3) contact_forces<3>(p, mu, force_, &torque_);
+  else contact_forces<1>(p, mu, force_);
+  auto normal_force = [&](int c) { return mu[static_cast<size_t>(block) * c]; };
 
   for (int i = 0; i < nlocal; ++i) {
     array_atom[i][0] = 0.0;
     for (int k = 0; k < 3; ++k) array_atom[i][k + 1] = force_[i][k];
+    if (block == 3)
+      for (int k = 0; k < 3; ++k) array_atom[i][k + 4] = torque_[i][k];
   }
-  double counts[2] = {0.0, 0.0};    // rows, active rows
+  // rows, active rows, energy dissipated by friction in the step: -h F_t . v_slip over the
+  // rows (each >= 0: Coulomb's force opposes the slip)
+  double counts[3] = {0.0, 0.0, 0.0};
   int nrows = 0;
   for (int c = 0; c < nc; ++c) {
     const int i = p.body_i[c], j = p.body_j[c];
     const bool here = p.counted[c] != 0;
     if (here) counts[0] += 1.0;
-    if (mu[c] == 0.0) continue;    // active: a force, pushing or (cohesion) pulling
+    if (normal_force(c) == 0.0) continue;    // active: a force, pushing or (cohesion) pulling
     if (i < nlocal) array_atom[i][0] += 1.0;
     if (!is_wall(j) && j < nlocal) array_atom[j][0] += 1.0;
     if (here) {
       counts[1] += 1.0;
       ++nrows;
+      if (block == 3) {
+        const double *m = &mu[3 * static_cast<size_t>(c)];
+        const Vec3 ft = m[1] * p.tangent1[c] + m[2] * p.tangent2[c];
+        counts[2] -= p.h * ft.dot(p.slip_velocity(c, u));
+      }
     }
   }
-  double all[2];
-  MPI_Allreduce(counts, all, 2, MPI_DOUBLE, MPI_SUM, world);
+  double all[3];
+  MPI_Allreduce(counts, all, 3, MPI_DOUBLE, MPI_SUM, world);
   diag_[CANDIDATES] = all[0];
   diag_[ACTIVE] = all[1];
+  diag_[FRICTION_WORK] = all[2];
 
+  const int ncols = local_columns();
   if (nrows > nlocal_rows_max_) {
     nlocal_rows_max_ = nrows;
     memory->destroy(fix_->array_local);
-    memory->create(fix_->array_local, nlocal_rows_max_, kLocalColumns, "hardcontact:array_local");
+    memory->create(fix_->array_local, nlocal_rows_max_, ncols, "hardcontact:array_local");
   }
   fix_->size_local_rows = nrows;
   int m = 0;
   for (int c = 0; c < nc; ++c) {
-    if (mu[c] == 0.0 || !p.counted[c]) continue;
+    if (normal_force(c) == 0.0 || !p.counted[c]) continue;
     const int j = p.body_j[c];
     double *row = fix_->array_local[m++];
     row[0] = atom->tag[p.body_i[c]];
     row[1] = is_wall(j) ? 0 : atom->tag[j];
-    row[2] = mu[c];
+    row[2] = normal_force(c);
     for (int k = 0; k < 3; ++k) row[3 + k] = p.normal[c][k];
     row[6] = is_wall(j) ? 1 + wall_index(j) : 0;    // in the order of the fix command, from 1
+    if (block != 3) continue;
+    const double *f = &mu[3 * static_cast<size_t>(c)];
+    const Vec3 ft = f[1] * p.tangent1[c] + f[2] * p.tangent2[c];
+    for (int k = 0; k < 3; ++k) row[7 + k] = ft[k];
+    // on the cone up to the solver's round-off: sliding
+    row[10] = ft.norm() >= (1.0 - 1e-6) * p.friction[c] * f[0] && p.friction[c] > 0.0 ? 1.0 : 0.0;
   }
 }
 

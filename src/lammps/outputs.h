@@ -21,14 +21,23 @@ class Outputs : protected LAMMPS_NS::Pointers {
  public:
   // global vector, see compute_vector()
   enum { ITERATIONS, MAX_OVERLAP, CANDIDATES, ACTIVE, RESIDUAL, MAXITER_HITS,
-         MAX_OVERLAP_RELATIVE, RHO, ROUNDS, CLEARING_WORK, NVECTOR };
-  // per atom: number of active contacts, contact force (3)
+         MAX_OVERLAP_RELATIVE, RHO, ROUNDS, CLEARING_WORK, FRICTION_WORK, NVECTOR };
+  // per atom: number of active contacts, contact force (3); with friction also the contact
+  // torque (3)
   static constexpr int kPerAtomColumns = 4;
-  // local: atom ID i, atom ID j (0 for a wall), force, normal (3), wall number (0 for a pair)
+  // local: atom ID i, atom ID j (0 for a wall), normal force, normal (3), wall number (0 for
+  // a pair); with friction also the tangential force on j (3, box frame) and 1 if the
+  // contact slides (on Coulomb's cone), 0 if it sticks
   static constexpr int kLocalColumns = 7;
+  static constexpr int kFrictionColumns = 4;
 
   // fix: its array_atom, array_local and size_local_rows are written here.
-  Outputs(LAMMPS_NS::LAMMPS *lmp, LAMMPS_NS::Fix *fix) : Pointers(lmp), fix_(fix) {}
+  Outputs(LAMMPS_NS::LAMMPS *lmp, LAMMPS_NS::Fix *fix, bool friction) :
+      Pointers(lmp), fix_(fix), friction_(friction)
+  {
+  }
+  int per_atom_columns() const { return kPerAtomColumns + (friction_ ? 3 : 0); }
+  int local_columns() const { return kLocalColumns + (friction_ ? kFrictionColumns : 0); }
   ~Outputs() override;
   Outputs(const Outputs &) = delete;
   Outputs &operator=(const Outputs &) = delete;
@@ -41,8 +50,9 @@ class Outputs : protected LAMMPS_NS::Pointers {
   // Setup: the overlaps the run starts from (a warning beyond tol), every other figure 0.
   void start_of_run(const ContactProblem &p, const WallGaps &walls, double tol);
   // After the solve of a step, before the atoms move: all outputs of the step.
+  // mu: block values per row (1, or 3 with friction).
   void record_step(const StepResult &r, const ContactProblem &p, const std::vector<double> &mu,
-                   const std::vector<Vec3> &u, const WallGaps &walls,
+                   int block, const std::vector<Vec3> &u, const WallGaps &walls,
                    const SolverSettings &settings);
   void end_of_run(const SolverSettings &settings);
 
@@ -50,13 +60,16 @@ class Outputs : protected LAMMPS_NS::Pointers {
   void record_solve(const StepResult &r, const SolverSettings &settings);
   void overlap_diagnostics(const ContactProblem &p, const std::vector<Vec3> *u, double h,
                            const WallGaps &walls);
-  void per_atom_and_local(const ContactProblem &p, const std::vector<double> &mu);
+  void per_atom_and_local(const ContactProblem &p, const std::vector<double> &mu, int block,
+                          const std::vector<Vec3> &u);
 
   LAMMPS_NS::Fix *fix_;
+  bool friction_;
   double diag_[NVECTOR] = {};
   LAMMPS_NS::bigint maxiter_hits_ = 0;
   LAMMPS_NS::bigint maxiter_hits_run_ = 0;
-  std::vector<Vec3> force_;    // contact force per owned atom
+  std::vector<Vec3> force_;     // contact force per owned atom
+  std::vector<Vec3> torque_;    // contact torque per owned atom (friction)
   int nlocal_rows_max_ = 0;
 };
 

@@ -37,7 +37,8 @@ StepResult ContactStep::solve(Solver &solver, const SolverSettings &settings,
                               ContactHistory *history, const StepEffects &effects)
 {
   const bool restitution = effects.restitution && !effects.restitution->empty();
-  const Bodies bodies = build_bodies(solver.traits().needs_owner_map);
+  block_ = effects.friction ? 3 : 1;
+  const Bodies bodies = build_bodies(solver.traits().needs_owner_map, effects);
   RowSink sink(problem_, atom->tag, atom->nlocal, free_speed_);
   sink.set_wall_velocities(effects.wall_velocity);
   sink.begin_candidates(1.0);
@@ -61,16 +62,24 @@ StepResult ContactStep::solve(Solver &solver, const SolverSettings &settings,
     targets.restitution = &row_e_;
     targets.bounce_vmin = effects.bounce_vmin;
   }
-  // Warm start: each row starts from the multiplier its pair had at the last step, if any.
-  if (history) history->load(problem_, atom->tag, mu_);
-  else mu_.assign(problem_.n_contacts(), 0.0);
-
-  StepResult result;
-  int targeted = 0;    // rows before it have their targets
-  for (;;) {
+  int targeted = 0;    // rows before it have their targets (and friction, its frames)
+  auto prepare_rows = [&]() {
     if (restitution) pair_values_of_rows(*effects.restitution, targeted, row_e_);
+    if (effects.friction) {
+      pair_values_of_rows(*effects.friction, targeted, problem_.friction);
+      problem_.complete_frames(targeted);
+    }
     targets.apply(problem_, targeted);
     targeted = problem_.n_contacts();
+  };
+  prepare_rows();
+  // Warm start: each row starts from the multiplier its pair had at the last step, if any.
+  if (history) history->load(problem_, atom->tag, mu_);
+  else mu_.assign(static_cast<size_t>(block_) * problem_.n_contacts(), 0.0);
+
+  StepResult result;
+  for (;;) {
+    if (targeted < problem_.n_contacts()) prepare_rows();
     result.report = solver.solve(problem_, settings, ops_, mu_, u_);    // from the mu so far
     result.iterations += result.report.iterations;
     ++result.rounds;
@@ -81,7 +90,7 @@ StepResult ContactStep::solve(Solver &solver, const SolverSettings &settings,
     if (ops_.sum_all(sink.added()) == 0.0) break;
     if (result.rounds == MAX_ROUNDS) {
       result.report.converged = false;
-      mu_.resize(problem_.n_contacts(), 0.0);    // the rows of the round not solved
+      mu_.resize(static_cast<size_t>(block_) * problem_.n_contacts(), 0.0);    // not solved
       break;
     }
   }
@@ -89,18 +98,18 @@ StepResult ContactStep::solve(Solver &solver, const SolverSettings &settings,
   if (pull_any_) {
     const int nc = problem_.n_contacts();
     pull_.resize(nc, 0.0);
-    force_.resize(nc);
-    for (int c = 0; c < nc; ++c) force_[c] = mu_[c] - pull_[c];
+    force_ = mu_;
+    for (int c = 0; c < nc; ++c) force_[static_cast<size_t>(block_) * c] -= pull_[c];
   }
   // The kinetic energy the solve may add (residual.h, energy_within_bound): the work of the
   // forces clearing overlaps present at q^n, sum mu max(0, -D) over the rows.
-  result.clearing_work = ops_.sum_all(clearing_work(problem_, mu_));
+  result.clearing_work = ops_.sum_all(clearing_work(problem_, mu_, block_));
   return result;
 }
 
 void ContactStep::find_overlaps(const Solver &solver)
 {
-  const Bodies bodies = build_bodies(solver.traits().needs_owner_map);
+  const Bodies bodies = build_bodies(solver.traits().needs_owner_map, StepEffects());
   RowSink sink(problem_, atom->tag, atom->nlocal, free_speed_);
   sink.begin_candidates(0.0);
   offer_rows(bodies, sink);
@@ -171,7 +180,7 @@ void ContactStep::check_bodies(const std::vector<PlaneWall> &walls) const
 
 // Eq. 14: u_free = u^n + h M^-1 f^{n+1}, f evaluated at q^n (LAMMPS's forces of this state).
 // Atoms outside the group are obstacles: contacts do not change their velocity (inv_mass 0).
-Bodies ContactStep::build_bodies(bool needs_owner_map)
+Bodies ContactStep::build_bodies(bool needs_owner_map, const StepEffects &effects)
 {
   const int nlocal = atom->nlocal;
   const int nall = nlocal + atom->nghost;
@@ -209,6 +218,29 @@ Bodies ContactStep::build_bodies(bool needs_owner_map)
   MPI_Allreduce(local, global, 2, MPI_DOUBLE, MPI_MAX, world);
   reach_.check_radius(global[1]);
   ops_.forward(problem_.u_free.data()->data(), kDoublesPerVec3);
+
+  // Friction: the bodies rotate. omega^n + h I^-1 torque, as fix nve/sphere would (its full
+  // step); obstacles (outside the group) have 1/I = 0.
+  if (effects.friction) {
+    problem_.inv_inertia.resize(nall);
+    problem_.radius.assign(atom->radius, atom->radius + nall);
+    problem_.w_free.resize(nall);
+    double **omega = atom->omega, **torque = atom->torque;
+    for (int i = 0; i < nall; ++i) {
+      const double inertia = effects.inertia * rmass[i] * atom->radius[i] * atom->radius[i];
+      problem_.inv_inertia[i] = (mask[i] & groupbit_) ? force->ftm2v / inertia : 0.0;
+    }
+    for (int i = 0; i < nlocal; ++i) {
+      Vec3 w(omega[i]);
+      if (mask[i] & groupbit_) w += (update->dt * problem_.inv_inertia[i]) * Vec3(torque[i]);
+      problem_.w_free[i] = w;
+    }
+    ops_.forward(problem_.w_free.data()->data(), kDoublesPerVec3);
+  } else {
+    problem_.inv_inertia.clear();
+    problem_.radius.clear();
+    problem_.w_free.clear();
+  }
 
   // The owners' coordinates on the ghosts, unshifted: a pair across a periodic boundary is
   // then measured as (x_j - x_i) + k L on both processes holding it (PairSource).

@@ -37,6 +37,10 @@ struct StepEffects {
   const std::vector<Vec3> *wall_velocity = nullptr;
   // F per type pair ((ntypes + 1)^2), empty for none (core/cohesion.h)
   const std::vector<double> *cohesion = nullptr;
+  // Coulomb coefficient per type pair ((ntypes + 1)^2), null for none: the bodies rotate and
+  // the solver must be one made for friction (core/laws/coulomb.h). I = inertia m r^2.
+  const std::vector<double> *friction = nullptr;
+  double inertia = 0.4;
 };
 
 class ContactStep : protected LAMMPS_NS::Pointers {
@@ -57,12 +61,14 @@ class ContactStep : protected LAMMPS_NS::Pointers {
   double memory_usage() const;
 
   const ContactProblem &problem() const { return problem_; }
-  // The contact forces of the last step (mu, or mu' - F with cohesion: core/cohesion.h).
+  // The contact forces of the last step (mu, or mu' - F with cohesion: core/cohesion.h),
+  // block() values per row (3 with friction: normal, tangent1, tangent2).
   const std::vector<double> &mu() const { return pull_any_ ? force_ : mu_; }
+  int block() const { return block_; }
   const std::vector<Vec3> &u() const { return u_; }
 
  private:
-  Bodies build_bodies(bool needs_owner_map);
+  Bodies build_bodies(bool needs_owner_map, const StepEffects &effects);
   void offer_rows(const Bodies &bodies, class RowSink &sink) const;
   // table[type_i, type_j] of rows first.. into out (a wall row: the atom's type with itself)
   void pair_values_of_rows(const std::vector<double> &table, int first, std::vector<double> &out);
@@ -83,6 +89,7 @@ class ContactStep : protected LAMMPS_NS::Pointers {
   std::vector<double> pull_;          // cohesion pulling each row this step (core/cohesion.h)
   std::vector<double> force_;         // mu' - pull: the forces reported with cohesion
   bool pull_any_ = false;
+  int block_ = 1;
   std::unordered_map<LAMMPS_NS::tagint, int> owner_index_;
 };
 
