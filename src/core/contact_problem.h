@@ -49,15 +49,15 @@ struct ContactProblem {
 
   // Friction (laws/coulomb.h), present only when a scene asks for it. The bodies then rotate:
   // a velocity vector holds n_bodies() linear velocities followed by n_bodies() angular ones
-  // (n_dof()). Per body: 1/I (0 for an obstacle), the radius (the arm of each of its contacts:
-  // the contact point lies on its surface along the normal), omega^n + h I^-1 torque. Per row:
-  // the Coulomb coefficient and two tangents completing the normal to an orthonormal frame
-  // (complete_frames).
+  // (n_dof()). Per body: 1/I (0 for an obstacle), the radius, omega^n + h I^-1 torque. Per
+  // row: the Coulomb coefficient, two tangents completing the normal to an orthonormal frame,
+  // and the arms from each centre to the contact point (complete_frames).
   std::vector<double> inv_inertia;
   std::vector<double> radius;
   std::vector<Vec3> w_free;
   std::vector<double> friction;
   std::vector<Vec3> tangent1, tangent2;
+  std::vector<double> arm_i, arm_j;
 
   bool rotates() const { return !inv_inertia.empty(); }
   // Length of a velocity vector: linear velocities, then angular ones if the bodies rotate.
@@ -76,6 +76,8 @@ struct ContactProblem {
     friction.clear();
     tangent1.clear();
     tangent2.clear();
+    arm_i.clear();
+    arm_j.clear();
   }
   void add_contact(int i, int j, const Vec3 &n, double d, double s, bool count = true)
   {
@@ -95,14 +97,23 @@ struct ContactProblem {
     const Vec3 du = (is_wall(j) ? Vec3::Zero() : u[j]) - u[body_i[c]];
     return normal[c].dot(du);
   }
-  // Tangents of rows first.. (with friction): a function of the normal alone, so that two
-  // processes holding the same row, and the next step's warm start, see the same frame.
+  // Tangents and arms of rows first.. (with friction), from the geometric gap (before any
+  // target term). The tangents are a function of the normal alone, so that two processes
+  // holding the same row, and the next step's warm start, see the same frame. The arms split
+  // the distance of the centres d = size + gap in the ratio of the radii (a wall row: the
+  // distance to the wall), so that they add up to d: the contact impulses then have no moment
+  // about any point, and angular momentum is exact without walls.
   void complete_frames(int first)
   {
     const int nc = n_contacts();
     tangent1.resize(nc);
     tangent2.resize(nc);
+    arm_i.resize(nc);
+    arm_j.resize(nc);
     for (int c = first; c < nc; ++c) {
+      const double stretch = 1.0 + gap[c] / size[c];
+      arm_i[c] = radius[body_i[c]] * stretch;
+      arm_j[c] = is_wall(body_j[c]) ? 0.0 : radius[body_j[c]] * stretch;
       const Vec3 &n = normal[c];
       // the axis least aligned with n gives the best-conditioned cross product
       int axis = 0;
@@ -113,17 +124,17 @@ struct ContactProblem {
     }
   }
   // The relative velocity of the contact points of row c (u_wall = 0): n . of it is
-  // normal_speed. The contact point sits at +r_i n on body i and -r_j n on body j, so spins
-  // add r_i n x w_i + r_j n x w_j.
+  // normal_speed. The contact point sits at +a_i n from centre i and -a_j n from centre j
+  // (the arms), so spins add a_i n x w_i + a_j n x w_j.
   Vec3 slip_velocity(int c, const std::vector<Vec3> &u) const
   {
     const int i = body_i[c], j = body_j[c], nb = n_bodies();
     const Vec3 &n = normal[c];
     Vec3 v = -u[i];
-    if (rotates()) v += radius[i] * n.cross(u[nb + i]);
+    if (rotates()) v += arm_i[c] * n.cross(u[nb + i]);
     if (!is_wall(j)) {
       v += u[j];
-      if (rotates()) v += radius[j] * n.cross(u[nb + j]);
+      if (rotates()) v += arm_j[c] * n.cross(u[nb + j]);
     }
     return v;
   }

@@ -16,6 +16,14 @@ void DualOperator::count_degrees(const std::vector<int> &rows)
     if (j >= 0 && j < p.n_owned) deg_[j] += 1.0;
   }
   ops_->forward(deg_.data(), 1);
+  if (!p.rotates()) return;
+  arm2_.assign(p.n_bodies(), 0.0);
+  for (const int c : rows) {
+    const int i = p.body_i[c], j = p.body_j[c];
+    if (i < p.n_owned) arm2_[i] = std::max(arm2_[i], p.arm_i[c] * p.arm_i[c]);
+    if (j >= 0 && j < p.n_owned) arm2_[j] = std::max(arm2_[j], p.arm_j[c] * p.arm_j[c]);
+  }
+  ops_->forward(arm2_.data(), 1);
 }
 
 Eigen::SparseMatrix<double> DualOperator::assembled() const
@@ -67,10 +75,10 @@ void DualOperator::forces(const std::vector<double> &mu, std::vector<Vec3> &forc
     if (j >= 0 && j < p.n_owned) force[j] += f;
     if constexpr (B == 3) {
       if (!torque) continue;
-      // the force on j acts at -r_j n, its opposite on i at +r_i n (apply_block)
+      // the force on j acts at -a_j n, its opposite on i at +a_i n (apply_block)
       const Vec3 turn = p.normal[c].cross(f);
-      if (i < p.n_owned) (*torque)[i] -= p.radius[i] * turn;
-      if (j >= 0 && j < p.n_owned) (*torque)[j] -= p.radius[j] * turn;
+      if (i < p.n_owned) (*torque)[i] -= p.arm_i[c] * turn;
+      if (j >= 0 && j < p.n_owned) (*torque)[j] -= p.arm_j[c] * turn;
     }
   }
 }

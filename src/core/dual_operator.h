@@ -99,7 +99,7 @@ class DualOperator {
     if (j >= 0 && j < p.n_owned) u[j] += p.inv_mass[j] * impulse;
   }
   // The same for a block: with friction the impulse h (m_n n + m_1 t_1 + m_2 t_2) acts on j
-  // at -r_j n and its opposite on i at +r_i n, so both spin by -r I^-1 n x impulse.
+  // at -a_j n and its opposite on i at +a_i n (the arms), so both spin by -a I^-1 n x impulse.
   template <int B>
   void apply_block(int c, const double *dm, std::vector<Vec3> &u) const
   {
@@ -113,11 +113,11 @@ class DualOperator {
       const Vec3 turn = p.normal[c].cross(impulse);
       if (i < p.n_owned) {
         u[i] -= p.inv_mass[i] * impulse;
-        if (p.rotates()) u[nb + i] -= (p.inv_inertia[i] * p.radius[i]) * turn;
+        if (p.rotates()) u[nb + i] -= (p.inv_inertia[i] * p.arm_i[c]) * turn;
       }
       if (j >= 0 && j < p.n_owned) {
         u[j] += p.inv_mass[j] * impulse;
-        if (p.rotates()) u[nb + j] -= (p.inv_inertia[j] * p.radius[j]) * turn;
+        if (p.rotates()) u[nb + j] -= (p.inv_inertia[j] * p.arm_j[c]) * turn;
       }
     }
   }
@@ -130,7 +130,7 @@ class DualOperator {
     return p.h * p.h * (p.inv_mass[p.body_i[c]] + (is_wall(j) ? 0.0 : p.inv_mass[j]));
   }
   // The largest eigenvalue of the block A_cc: with friction it is diagonal (n, t_1, t_2 are
-  // orthonormal and n x n = 0), its tangential entries h^2 sum (w + r^2 / I).
+  // orthonormal and n x n = 0), its tangential entries h^2 sum (w + a^2 / I).
   template <int B>
   double block_diagonal(int c) const
   {
@@ -138,15 +138,21 @@ class DualOperator {
       return diagonal(c);
     } else {
       const ContactProblem &p = *p_;
-      const int j = p.body_j[c];
-      return p.h * p.h * (body_weight(p.body_i[c]) + (is_wall(j) ? 0.0 : body_weight(j)));
+      const int i = p.body_i[c], j = p.body_j[c];
+      double d = p.inv_mass[i];
+      if (p.rotates()) d += p.inv_inertia[i] * p.arm_i[c] * p.arm_i[c];
+      if (!is_wall(j)) {
+        d += p.inv_mass[j];
+        if (p.rotates()) d += p.inv_inertia[j] * p.arm_j[c] * p.arm_j[c];
+      }
+      return p.h * p.h * d;
     }
   }
   // Gershgorin: the off-diagonal entries of row c are h^2 w_k n_c.n_d for rows d sharing body
   // k, so |A_cc| + sum |A_cd| <= h^2 (w_i deg_i + w_j deg_j) with deg_k the rows touching k.
   // With friction each of the B components of a row meets B of every row d on body k, each
-  // entry at most w_k + r_k^2 / I_k. count_degrees() over the listed rows first (owners
-  // count, ghosts receive: an owner holds every row of its own bodies).
+  // entry at most w_k + A_k^2 / I_k, A_k the longest arm on k. count_degrees() over the listed
+  // rows first (owners count, ghosts receive: an owner holds every row of its own bodies).
   void count_degrees(const std::vector<int> &rows);
   template <int B = 1>
   double gershgorin_row(int c) const
@@ -209,16 +215,18 @@ class DualOperator {
     if constexpr (B == 1) return m[0] != 0.0;
     else return m[0] != 0.0 || m[1] != 0.0 || m[2] != 0.0;
   }
-  // w + r^2 / I: the inverse effective mass of a body's contact point in a tangential direction
+  // w + A^2 / I: bounds the inverse effective mass of a body's contact points in a
+  // tangential direction (A^2 from count_degrees)
   double body_weight(int b) const
   {
     const ContactProblem &p = *p_;
-    return p.inv_mass[b] + (p.rotates() ? p.inv_inertia[b] * p.radius[b] * p.radius[b] : 0.0);
+    return p.inv_mass[b] + (p.rotates() ? p.inv_inertia[b] * arm2_[b] : 0.0);
   }
 
   const ContactProblem *p_ = nullptr;
   DistributedOps *ops_ = nullptr;
   std::vector<double> deg_;      // per body, from count_degrees()
+  std::vector<double> arm2_;     // per body, the longest arm squared (friction), ditto
   std::vector<double> shift_;    // per row, friction only
 };
 

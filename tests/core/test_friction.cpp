@@ -128,6 +128,32 @@ TEST(Friction, ObliquePairStickBelowSlideAboveThreshold)
   }
 }
 
+// A pair that closes within the step (gap > 0 at q^n): the impulses act at the contact point
+// between the centres (arms in the ratio of the radii), so angular momentum about any point
+// stays exact.
+TEST(Friction, AngularMomentumExactForAClosingPair)
+{
+  const double h = 0.1, mu = 0.8;
+  const std::vector<double> r = {0.5, 0.3};
+  const std::vector<Vec3> q = {Vec3(0.1, -0.2, 0.3), Vec3(0.1 + 0.9, -0.2 + 0.05, 0.3)};
+  ContactProblem p = hctest::make_problem(h, {1.0, 0.4}, {Vec3(2.0, 1.0, -0.5), Vec3(-1, 0, 0.3)});
+  hctest::add_pair(p, 0, 1, q[0], q[1], r[0], r[1]);
+  ASSERT_GT(p.gap[0], 0.0);
+  add_friction(p, r, mu, {Vec3(1.0, -2.0, 0.5), Vec3(0.0, 3.0, 1.0)});
+  const double I0 = 0.4 * r[0] * r[0] / p.inv_mass[0], I1 = 0.4 * r[1] * r[1] / p.inv_mass[1];
+  auto angular = [&](const std::vector<Vec3> &u, const std::vector<Vec3> &w) {
+    return Vec3(q[0].cross(u[0]) / p.inv_mass[0] + q[1].cross(u[1]) / p.inv_mass[1] + I0 * w[0] +
+                I1 * w[1]);
+  };
+  const Vec3 L0 = angular(p.u_free, p.w_free);
+  for (const char *name : {"apgd", "pgs", "uzawa"}) {
+    const Solved s = solve(p, name, 1e-10);
+    ASSERT_GT(s.mu[0], 0.0) << name;
+    const Vec3 L = angular({s.u[0], s.u[1]}, {s.u[2], s.u[3]});
+    EXPECT_NEAR((L - L0).norm(), 0.0, 1e-14 * L0.norm()) << name;
+  }
+}
+
 double kinetic2(const ContactProblem &p, const std::vector<Vec3> &u)
 {
   const int n = p.n_bodies();
