@@ -42,7 +42,12 @@ hardcontact_deck_test(NAME phys_cluster_ranks_full SCRIPT integration/test_phys_
 #               obstacle (outside): no overlap beyond the documented bounds, resting heights
 #  cohesion     a sphere hangs under a ceiling iff m g < F; a touching pair pulled apart opens
 #               at F; cohesion 0 bit-identical to none
-foreach(_effect restitution moving_wall region_wall cohesion)
+#  friction     a sphere rolls down an incline at 5/7 g sin or slips at g (sin - mu cos), a
+#               launched sphere slides then rolls at 5/7 v0, no lift-off while sliding, the
+#               dissipation output, oblique pairs stick/slide at 7/2 mu, friction 0
+#               bit-identical to none, a spinning gas: energy never grows, linear and angular
+#               momentum exact, ranks agree
+foreach(_effect restitution moving_wall region_wall cohesion friction)
   foreach(_np 1 2 4)
     hardcontact_deck_test(NAME phys_${_effect}_np${_np} SCRIPT integration/test_phys_${_effect}.py
                           NP ${_np} LABELS physics TIMEOUT 300)

@@ -1,0 +1,347 @@
+#!/usr/bin/env python3
+"""Coulomb friction (keyword `friction mu [I J]`, core/laws/coulomb.h) on decks whose answer
+mechanics gives, at the rank count ctest gives (np 1/2/4):
+
+1. A sphere on an incline (gravity tilted by theta over a zplane floor, g = 1, r = 0.5):
+   - theta = 20 deg, mu = 0.5 (tan theta <= 7/2 mu): it rolls without slipping, v = 5/7 g
+     sin(theta) t and omega = v / r;
+   - theta = 70 deg, mu = 0.5: it slips, v = g (sin - mu cos) t, and spins up at
+     omega = 5 mu g cos(theta) t / (2 r);
+   - `friction 0.5 friction 0.1 1 1` at 20 deg: the later, per-type value (0.1, below the
+     rolling threshold 0.104) applies: it slips.
+   In every case the centre stays at height r within 1e-6 (the convex relaxation's artefact,
+   lift-off by h mu |v_t| per step, would reach 0.03 here: De Saxce's shift removes it).
+   The sphere travels across the processors' sub-domains. Speeds within 1e-5: the solver stops
+   at velocity errors of tol x the row scale / h (core/residual.h).
+2. A sphere launched at v0 = 2 with no spin on a floor (mu = 0.3): it slides, decelerating at
+   mu g, then rolls from t* = 2 v0 / (7 mu g) at 5/7 v0, with omega = v / r.
+   In 1 and 2 the energy friction dissipates in a step (f_hc[11]) is h F_t times the mean slip
+   velocity of the step, the kinetic energy the tangential impulse removes (eq. 16), within
+   1e-4 (of the run's largest value) at every step.
+3. An oblique pair of equal spheres (no gravity): with v_t / v_n below 7/2 mu the contact
+   sticks (the contact points leave with no relative tangential velocity), above it slides
+   (tangential impulse = mu x normal impulse, read from the local dump); momentum exact and
+   angular momentum about the origin exact (sum m x cross v + I omega) at every step.
+4. `friction 0`: the same dump as no keyword, to the last bit.
+5. A gas of 216 spinning spheres (no walls, no gravity, boundary f) converging on itself:
+   kinetic energy (translational + rotational) never increases, linear and angular momentum
+   exact at every step; under mpirun the result agrees with the serial run within the solver
+   tolerance after the first collisions.
+"""
+
+import math
+
+import numpy as np
+
+import lammps_run as lr
+import physics_common as pc
+import scene_data as sd
+
+H = 0.01
+
+INCLINE = """
+units           lj
+atom_style      sphere
+dimension       3
+boundary        p p f
+atom_modify     map array
+comm_modify     vel yes
+region          box block -30 30 -2 2 0 6
+create_box      1 box
+create_atoms    1 single {x0} 0 0.5
+set             atom 1 diameter 1.0 density 1.0
+velocity        all set {v0} 0 0
+pair_style      none
+neighbor        0.5 bin
+fix             hc all hardcontact wall zplane 0 NULL {keywords}
+fix             g all gravity 1.0 vector {gx} 0 {gz}
+timestep        {h}
+compute         om all property/atom omegay
+variable        x equal x[1]
+variable        z equal z[1]
+variable        vx equal vx[1]
+compute         wy all reduce sum c_om
+variable        wy equal c_wy    # one atom: the sum is its spin
+thermo_style    custom step v_x v_z v_vx v_wy f_hc[1] f_hc[11]
+thermo_modify   format float %.15g
+thermo          {every}
+dump            d all custom {dump_every} dump.atoms id x y z vx vy vz omegax omegay omegaz
+dump_modify     d format float %.17g sort id
+run             {n}
+"""
+
+
+def incline(args, name, theta_deg, keywords, n=1000, v0=0.0, x0=-20.0, flat=False):
+    th = math.radians(theta_deg)
+    gx, gz = (0.0, -1.0) if flat else (math.sin(th), -math.cos(th))
+    wd = "%s/%s" % (args.workdir, name)
+    lr.fresh_workdir(wd)
+    deck = INCLINE.format(x0=x0, v0=v0, keywords=keywords, gx=repr(gx), gz=repr(gz), h=H,
+                          every=1, dump_every=n, n=n)
+    res = lr.run_deck(args.lmp, deck, args.np, wd, timeout=args.timeout)
+    th_ = res.thermo[-1]
+    t = np.asarray(th_["Step"], dtype=float) * H
+    return res, t, th_
+
+
+def check_dissipation(name, th, sin_theta, r=0.5):
+    """f_hc[11], step by step, against the kinetic energy the tangential impulse removes:
+    h F_t (s_free + s_new) / 2 with s = v - omega r the slip of the contact point, s_free =
+    s_old + g sin(theta) h (the step's free motion) and F_t = m (g sin(theta) - dv/dt) from the
+    momentum (thermo every step). Exact for the scheme's update (eq. 16)."""
+    m = pc.sphere_mass(r, 1.0)
+    v, w = np.asarray(th["v_vx"]), np.asarray(th["v_wy"])
+    slip = v - w * r
+    s_free = slip[:-1] + sin_theta * H
+    ft = m * (sin_theta - np.diff(v) / H)
+    want = H * ft * 0.5 * (s_free + slip[1:])
+    got = np.asarray(th["f_hc[11]"])[1:]
+    err = float(np.abs(got - want).max())
+    scale = float(np.abs(want).max())
+    lr.check(err <= 1e-4 * scale + 1e-15,
+             "%s: f_hc[11] = h F_t x the step's mean slip at every step (largest %.3g, error "
+             "%.3g; %.6g dissipated over the run)" % (name, scale, err, float(got.sum())))
+
+
+def check_height(name, th, bound=1e-6):
+    dz = float(np.abs(np.asarray(th["v_z"]) - 0.5).max())
+    lr.check(dz <= bound, "%s: centre at height r within %.0e (largest error %.3g)" % (name, bound, dz))
+
+
+def incline_tests(args):
+    r = 0.5
+    # rolling
+    _, t, th = incline(args, "roll", 20.0, "friction 0.5")
+    a = 5.0 / 7.0 * math.sin(math.radians(20.0))
+    err_v = float(np.abs(th["v_vx"] - a * t).max())
+    err_w = float(np.abs(th["v_wy"] * r - th["v_vx"]).max())
+    lr.check(err_v <= 1e-6 * max(1.0, a * t[-1]),
+             "roll: v = 5/7 g sin(theta) t = %.9g at t = %g (got %.9g, largest error %.3g)"
+             % (a * t[-1], t[-1], th["v_vx"][-1], err_v))
+    lr.check(err_w <= 1e-5, "roll: no slip, omega r = v (largest |omega r - v| %.3g)" % err_w)
+    check_height("roll", th)
+    check_dissipation("roll", th, math.sin(math.radians(20.0)))
+    # slipping
+    for name, theta, kw, mu in (("slip", 70.0, "friction 0.5", 0.5),
+                                ("slip_type", 20.0, "friction 0.5 friction 0.1 1 1", 0.1)):
+        _, t, th = incline(args, name, theta, kw)
+        s, c = math.sin(math.radians(theta)), math.cos(math.radians(theta))
+        lr.check(math.tan(math.radians(theta)) > 3.5 * mu, "%s: above the rolling threshold" % name)
+        a = s - mu * c
+        wdot = 5.0 * mu * c / (2.0 * r)
+        err_v = float(np.abs(th["v_vx"] - a * t).max())
+        err_w = float(np.abs(th["v_wy"] - wdot * t).max())
+        lr.check(err_v <= 1e-5 * max(1.0, a * t[-1]) and err_w <= 1e-5 * max(1.0, wdot * t[-1]),
+                 "%s (mu %g, theta %g): v = g (sin - mu cos) t = %.9g, omega = 5 mu g cos t / 2r "
+                 "= %.9g at t = %g (got %.9g, %.9g; errors %.3g, %.3g)"
+                 % (name, mu, theta, a * t[-1], wdot * t[-1], t[-1], th["v_vx"][-1],
+                    th["v_wy"][-1], err_v, err_w))
+        check_height(name, th)
+        check_dissipation(name, th, s)
+
+
+def launched(args):
+    mu, v0, r = 0.3, 2.0, 0.5
+    _, t, th = incline(args, "launch", 0.0, "friction %g" % mu, n=600, v0=v0, flat=True)
+    tstar = 2.0 * v0 / (7.0 * mu)
+    slide = t < tstar - 2 * H
+    roll = t > tstar + 2 * H
+    err_slide = float(np.abs(th["v_vx"][slide] - (v0 - mu * t[slide])).max())
+    err_roll = float(np.abs(th["v_vx"][roll] - 5.0 / 7.0 * v0).max())
+    err_w = float(np.abs(th["v_wy"][roll] * r - th["v_vx"][roll]).max())
+    lr.check(err_slide <= 1e-5 and err_roll <= 1e-5 and err_w <= 1e-5,
+             "launch: slides at v0 - mu g t until t* = 2 v0 / (7 mu g) = %.6g, then rolls at 5/7 "
+             "v0 = %.9g with omega r = v (errors %.3g, %.3g, %.3g)"
+             % (tstar, 5.0 / 7.0 * v0, err_slide, err_roll, err_w))
+    check_dissipation("launch", th, 0.0)
+    check_height("launch", th)
+
+
+def frictionless_same(args):
+    wd = lr.fresh_workdir("%s/zero" % args.workdir)
+    dumps = []
+    for name, kw in (("none", ""), ("zero", "friction 0")):
+        deck = INCLINE.format(x0=-20.0, v0=2.0, keywords=kw, gx=0.3, gz=-1.0, h=H, every=50,
+                              dump_every=10, n=300)
+        lr.run_deck(args.lmp, deck.replace("dump.atoms", "dump." + name), args.np, wd,
+                    deck_name="in." + name, log_name="log." + name, timeout=args.timeout)
+        dumps.append(lr.read_dump(wd / ("dump." + name)))
+    same = len(dumps[0]) == len(dumps[1]) and all(
+        np.array_equal(pc.positions(a), pc.positions(b)) and np.array_equal(pc.velocities(a), pc.velocities(b))
+        for a, b in zip(*dumps))
+    lr.check(same, "friction 0: the same dump as no keyword, bit for bit (%d frames)" % len(dumps[0]))
+
+
+PAIR = """
+units           lj
+atom_style      sphere
+dimension       3
+boundary        f f f
+atom_modify     map array
+comm_modify     vel yes
+read_data       data.two
+pair_style      none
+neighbor        1.0 bin
+fix             hc all hardcontact tol 1e-10 friction {mu}
+timestep        {h}
+dump            d all custom 1 dump.atoms id mass radius x y z vx vy vz omegax omegay omegaz
+dump_modify     d format float %.17g sort id
+dump            l all local 1 dump.local f_hc[1] f_hc[2] f_hc[3] f_hc[4] f_hc[5] f_hc[6] f_hc[7] f_hc[8] f_hc[9] f_hc[10] f_hc[11]
+dump_modify     l format float %.17g
+run             {n}
+"""
+
+
+def spins(frame):
+    c = frame.columns
+    return np.column_stack([c["omegax"], c["omegay"], c["omegaz"]])
+
+
+def angular_momentum(frame):
+    c = frame.columns
+    m, r = np.asarray(c["mass"]), np.asarray(c["radius"])
+    x, v, w = pc.positions(frame), pc.velocities(frame), spins(frame)
+    return (m[:, None] * np.cross(x, v)).sum(axis=0) + ((0.4 * m * r * r)[:, None] * w).sum(axis=0)
+
+
+def oblique(args):
+    mu, vn, h = 0.4, 1.0, 0.05
+    e = np.array([1.0, 2.0, 2.0]) / 3.0
+    t = np.array([2.0, -2.0, 1.0]) / 3.0    # perpendicular to e
+    for name, ratio in (("stick", 0.5), ("slide", 2.0)):
+        vt = ratio * 3.5 * mu * vn
+        wd = "%s/oblique_%s" % (args.workdir, name)
+        lr.fresh_workdir(wd)
+        x0 = np.array([-0.505 * e, 0.505 * e])    # gap 0.01: they meet in the first step
+        v0 = np.array([vn * e + vt * t, np.zeros(3)])
+        pc.write_sphere_data(wd + "/data.two", ((-10, 10), (-10, 10), (-10, 10)), 0.5, 1.0, x0, v0)
+        lr.run_deck(args.lmp, PAIR.format(mu=mu, h=h, n=40), args.np, wd, timeout=args.timeout)
+        frames = lr.read_dump(wd + "/dump.atoms")
+        local = lr.read_dump_local(wd + "/dump.local")
+        m = pc.sphere_mass(0.5, 1.0)
+        P0, L0 = m * v0.sum(axis=0), angular_momentum(frames[0])
+        worst_p = max(float(np.abs(m * pc.velocities(f).sum(axis=0) - P0).max()) for f in frames)
+        worst_l = max(float(np.abs(angular_momentum(f) - L0).max()) for f in frames)
+        lr.check(worst_p <= 1e-13 and worst_l <= 1e-13 * max(1.0, float(np.abs(L0).max())),
+                 "oblique %s: momentum and angular momentum exact at every step (%.3g, %.3g)"
+                 % (name, worst_p, worst_l))
+        rows = [f for f in local if len(f.columns.get("f_hc[3]", []))]
+        lr.check(len(rows) > 0, "oblique %s: the pair touched" % name)
+        step, col = rows[0].timestep, rows[0].columns
+        fn = float(col["f_hc[3]"][0])
+        ft = float(np.linalg.norm([col["f_hc[%d]" % k][0] for k in (8, 9, 10)]))
+        flag = float(col["f_hc[11]"][0])
+        lr.check(fn > 0 and ft <= mu * fn * (1 + 1e-9), "oblique %s: |F_t| %.9g <= mu F_n %.9g"
+                 % (name, ft, mu * fn))
+        after = next(f for f in frames if f.timestep == step)
+        before = next(f for f in frames if f.timestep == step - 1)
+        v, w = pc.velocities(after), spins(after)
+        # the contact points' relative tangential velocity after the impact, with the normal
+        # and the arms (half the distance for equal spheres) of the solve, at q^n
+        x = pc.positions(before)
+        n = (x[1] - x[0]) / np.linalg.norm(x[1] - x[0])
+        a = 0.5 * np.linalg.norm(x[1] - x[0])
+        slip = v[1] - v[0] + a * np.cross(n, w[0]) + a * np.cross(n, w[1])
+        slip_t = slip - np.dot(slip, n) * n
+        if name == "stick":
+            lr.check(np.linalg.norm(slip_t) <= 1e-6 * vt and flag == 0.0,
+                     "oblique stick (v_t/v_n = %g x 7/2 mu): no slip after the impact (%.3g), "
+                     "flagged sticking" % (ratio, np.linalg.norm(slip_t)))
+        else:
+            lr.check(abs(ft - mu * fn) <= 1e-8 * fn and flag == 1.0 and
+                     np.linalg.norm(slip_t) > 0.1 * vt,
+                     "oblique slide (v_t/v_n = %g x 7/2 mu): |F_t| = mu F_n, flagged sliding, "
+                     "still slipping (%.3g)" % (ratio, np.linalg.norm(slip_t)))
+
+
+GAS = """
+units           lj
+atom_style      sphere
+dimension       3
+boundary        f f f
+atom_modify     map array
+comm_modify     vel yes
+read_data       gas.data
+pair_style      none
+neighbor        0.3 bin
+fix             hc all hardcontact friction 0.5 tol 1e-8
+timestep        0.02
+compute         rot all erotate/sphere
+thermo_style    custom step ke c_rot f_hc[1] f_hc[4] f_hc[11]
+thermo_modify   norm no format float %.17g
+thermo          1
+dump            d all custom 5 dump.atoms id mass radius x y z vx vy vz omegax omegay omegaz
+dump_modify     d format float %.17g sort id
+run             {n}
+"""
+
+
+def gas(args):
+    scene = sd.gas(n_side=6, converge=0.6, seed=4)
+    wd = lr.fresh_workdir("%s/gas" % args.workdir)
+    # a box with room around the cube (boundary f, no walls), and random spins
+    box = scene.box.copy()
+    box[:, 0] -= 5.0
+    box[:, 1] += 5.0
+    scene = scene._replace(box=box)
+    sd.write_data(wd / "gas.data", scene, "friction test: spinning gas")
+    rng = np.random.default_rng(7)
+    w0 = rng.uniform(-2.0, 2.0, (len(scene.diameter), 3))
+    text = open(wd / "gas.data").read()
+    # sd.write_data leaves the angular velocities 0: put the spins in
+    head, vel = text.split("Velocities")
+    lines = vel.strip().split("\n")
+    out = []
+    for ln in lines:
+        tok = ln.split()
+        if len(tok) == 7:
+            k = int(tok[0]) - 1
+            tok[4:7] = [repr(float(c)) for c in w0[k]]
+        out.append(" ".join(tok))
+    open(wd / "gas.data", "w").write(head + "Velocities\n\n" + "\n".join(out) + "\n")
+
+    def run(np_, name):
+        d = wd / name
+        lr.fresh_workdir(d)
+        (d / "gas.data").write_text((wd / "gas.data").read_text())
+        return lr.run_deck(args.lmp, GAS.format(n=60), np_, d, timeout=args.timeout), d
+
+    res, d = run(args.np, "np%d" % args.np)
+    th = res.thermo[-1]
+    e = np.asarray(th["KinEng"]) + np.asarray(th["c_rot"])
+    rise = float(np.max(np.diff(e) / e[:-1]))
+    lr.check(rise <= 1e-12, "gas: kinetic energy (with spins) never increases (largest relative "
+             "rise %.3g; %.4g -> %.4g, %d contacts at the end, friction dissipated %.4g)"
+             % (rise, e[0], e[-1], th["f_hc[4]"][-1], float(np.sum(th["f_hc[11]"]))))
+    frames = lr.read_dump(d / "dump.atoms")
+    m = np.asarray(frames[0].columns["mass"])
+    P0 = (m[:, None] * pc.velocities(frames[0])).sum(axis=0)
+    L0 = angular_momentum(frames[0])
+    scale_p = float((m * np.linalg.norm(pc.velocities(frames[0]), axis=1)).sum())
+    worst_p = max(float(np.abs((m[:, None] * pc.velocities(f)).sum(axis=0) - P0).max()) for f in frames)
+    worst_l = max(float(np.abs(angular_momentum(f) - L0).max()) for f in frames)
+    lr.check(worst_p <= 1e-13 * scale_p and worst_l <= 1e-12 * scale_p * 10,
+             "gas: linear and angular momentum exact at every step (%.3g, %.3g)" % (worst_p, worst_l))
+    lr.check(th["f_hc[4]"][-1] > 20, "gas: the spheres collide (%d contacts)" % th["f_hc[4]"][-1])
+    if args.np > 1:
+        _, d1 = run(1, "np1")
+        a, b = lr.read_dump(d / "dump.atoms")[2], lr.read_dump(d1 / "dump.atoms")[2]
+        dx = float(np.abs(pc.positions(a) - pc.positions(b)).max())
+        dv = float(np.abs(pc.velocities(a) - pc.velocities(b)).max())
+        dw = float(np.abs(spins(a) - spins(b)).max())
+        lr.check(dx <= 1e-8 and dv <= 1e-6 and dw <= 1e-5,
+                 "gas: %d ranks agree with 1 at step %d (dx %.3g, dv %.3g, domega %.3g)"
+                 % (args.np, a.timestep, dx, dv, dw))
+
+
+def test():
+    args = lr.test_args(__doc__)
+    incline_tests(args)
+    launched(args)
+    frictionless_same(args)
+    oblique(args)
+    gas(args)
+
+
+if __name__ == "__main__":
+    lr.main(test)
