@@ -22,6 +22,9 @@ ID starts cold and agrees within 100 x tol x size (20 steps of collisions amplif
 tolerance-sized difference; it scales with tol). With --np > 1 the restart file is also
 read on one rank (same tolerances).
 
+The pile runs twice: frictionless, and with `friction 0.5` (the history then carries the
+tangential forces too, and the warm start after read_restart must bring them back).
+
 Crystal: 216 touching spheres stacked as an FCC crystal slide sideways on a frictionless floor
 (periodic in x and y), so that under mpirun atoms cross processor boundaries with their
 warm-start multipliers: run 120 vs run 60 + restart + run 60 within tol * size, the restart
@@ -45,7 +48,7 @@ pair_style      none
 neighbor        1.0 bin
 timestep        {dt}
 fix             g all gravity 10.0 vector 0 0 -1
-fix             1 all hardcontact tol {tol} wall xplane 0 {w} wall yplane 0 {w} wall zplane 0 NULL
+fix             1 all hardcontact tol {tol} wall xplane 0 {w} wall yplane 0 {w} wall zplane 0 NULL {extra}
 thermo_style    custom step ke f_1[1] f_1[2] f_1[3] f_1[4] f_1[5] f_1[6] f_1[7]
 thermo_modify   norm no
 thermo          1
@@ -54,8 +57,9 @@ dump_modify     d format float %.17g
 """
 
 
-def deck(read, dump, body, width):
-    return COMMON.format(read=read, dt=DT, tol=TOL, w=repr(width), every=HALF, dump=dump) + body
+def deck(read, dump, body, width, extra=""):
+    return COMMON.format(read=read, dt=DT, tol=TOL, w=repr(width), every=HALF, dump=dump,
+                         extra=extra) + body
 
 
 def final_state(path, step):
@@ -133,26 +137,31 @@ def crystal(args):
                  "rank, within tol * size (dx %.3g, dv %.3g)" % (args.np, dx1, dv1))
 
 
-def pile(args):
+def pile(args, label="pile", extra=""):
     scene = sd.pile(n_side=5, layers=4, seed=1)
     n = len(scene.diameter)
     width = scene.box[0, 1]
-    wd = lr.fresh_workdir("%s/pile" % args.workdir)
+    wd = lr.fresh_workdir("%s/%s" % (args.workdir, label))
+
+    def scene_deck(read, dump, body, width):
+        return deck(read, dump, body, width, extra)
+
     sd.write_data(wd / "pile.data", scene, "restart test: 100 spheres thrown into a box")
 
     def run(name, text):
         return lr.run_deck(args.lmp, text, args.np, wd, deck_name="in." + name,
                            log_name="log." + name, timeout=args.timeout)
 
-    straight = run("straight", deck("read_data pile.data", "straight.dump",
+    straight = run("straight", scene_deck("read_data pile.data", "straight.dump",
                                     "run %d\n" % STEPS, width))
-    run("split1", deck("read_data pile.data", "split1.dump",
+    run("split1", scene_deck("read_data pile.data", "split1.dump",
                        "run %d\nwrite_restart half.restart\n" % HALF, width))
-    split2 = run("split2", deck("read_restart half.restart", "split2.dump",
+    split2 = run("split2", scene_deck("read_restart half.restart", "split2.dump",
                                 "run %d\n" % HALF, width))
-    run("twice", deck("read_data pile.data", "twice.dump",
+    run("twice", scene_deck("read_data pile.data", "twice.dump",
                       "run %d\nrun %d\n" % (HALF, HALF), width))
 
+    print("--- %s (%s)" % (label, extra or "frictionless"))
     th = straight.thermo[0]
     lr.check(th["f_1[4]"][list(th["Step"]).index(HALF)] > 50 and th["f_1[4]"][-1] > 100,
              "the scene is a pile: %d active contacts at step %d, %d at step %d"
@@ -196,7 +205,7 @@ def pile(args):
     lr.check(abs(int(it_s) - int(it_r)) <= 1, "first solve after read_restart: %d iterations, as in "
              "the straight run (%d): the warm-start multipliers came back" % (it_r, it_s))
     # fix redefined under another ID: its restart data is not used (cold start), same result
-    other = run("split2_other_id", deck("read_restart half.restart", "split2_other.dump",
+    other = run("split2_other_id", scene_deck("read_restart half.restart", "split2_other.dump",
                                         "run %d\n" % HALF, width).replace("fix             1 all",
                                                                           "fix             7 all")
                 .replace("f_1[", "f_7["))
@@ -214,7 +223,7 @@ def pile(args):
 
     if args.np > 1:
         # the same restart file read on one rank
-        lr.run_deck(args.lmp, deck("read_restart half.restart", "split2_np1.dump",
+        lr.run_deck(args.lmp, scene_deck("read_restart half.restart", "split2_np1.dump",
                                    "run %d\n" % HALF, width), 1, wd, deck_name="in.split2_np1",
                     log_name="log.split2_np1", timeout=args.timeout)
         ids_1, x1, v1 = final_state(wd / "split2_np1.dump", STEPS)
@@ -230,6 +239,9 @@ def pile(args):
 def test():
     args = lr.test_args(__doc__)
     pile(args)
+    # friction: the history holds three values per contact (the force as a box-frame vector),
+    # the spins are in the restart file
+    pile(args, "pile_friction", "friction 0.5")
     crystal(args)
 
 
