@@ -11,6 +11,8 @@
 #include "memory.h"
 #include "update.h"
 
+#include <algorithm>
+
 using namespace LAMMPS_NS;
 
 namespace hardcontact {
@@ -114,9 +116,17 @@ void Outputs::per_atom_and_local(const ContactProblem &p, const std::vector<doub
     if (block == 3)
       for (int k = 0; k < 3; ++k) array_atom[i][k + 4] = torque_[i][k];
   }
-  // rows, active rows, energy dissipated by friction in the step: -h F_t . v_slip over the
-  // rows (each >= 0: Coulomb's force opposes the slip)
+  // rows, active rows, energy dissipated by friction in the step. Since u^{n+1} - u_free =
+  // h M^-1 sum_c G_c^T mu_c (eq. 16), the kinetic energy the contacts change is exactly
+  // h sum_c mu_c . G_c (u_free + u^{n+1}) / 2: the tangential terms, -h F_t . (mean slip),
+  // are what friction dissipates (>= 0: Coulomb's force opposes the slip).
   double counts[3] = {0.0, 0.0, 0.0};
+  if (block == 3) {
+    const int nb = p.n_bodies();
+    u_free_.resize(2 * static_cast<size_t>(nb));
+    std::copy(p.u_free.begin(), p.u_free.end(), u_free_.begin());
+    std::copy(p.w_free.begin(), p.w_free.end(), u_free_.begin() + nb);
+  }
   int nrows = 0;
   for (int c = 0; c < nc; ++c) {
     const int i = p.body_i[c], j = p.body_j[c];
@@ -131,7 +141,8 @@ void Outputs::per_atom_and_local(const ContactProblem &p, const std::vector<doub
       if (block == 3) {
         const double *m = &mu[3 * static_cast<size_t>(c)];
         const Vec3 ft = m[1] * p.tangent1[c] + m[2] * p.tangent2[c];
-        counts[2] -= p.h * ft.dot(p.slip_velocity(c, u));
+        const Vec3 slip = 0.5 * (p.slip_velocity(c, u) + p.slip_velocity(c, u_free_));
+        counts[2] -= p.h * ft.dot(slip);
       }
     }
   }

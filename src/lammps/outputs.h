@@ -70,6 +70,7 @@ class Outputs : protected LAMMPS_NS::Pointers {
   LAMMPS_NS::bigint maxiter_hits_run_ = 0;
   std::vector<Vec3> force_;     // contact force per owned atom
   std::vector<Vec3> torque_;    // contact torque per owned atom (friction)
+  std::vector<Vec3> u_free_;    // u_free then w_free (friction): the dissipation's mean slip
   int nlocal_rows_max_ = 0;
 };
 

@@ -35,6 +35,17 @@ class IterativeSolver : public Solver {
     for (int k = 0;; ++k) {
       report.iterations = k;
       report.residual = ops.max_all(set_residual(mu, u));
+      if constexpr (B > 1) {
+        // Friction's fixed point: solving the problem of stale shifts further than they are
+        // off is wasted work, so the shifts move as soon as the residual is below their drift
+        // (the drift: how far the shifts are from coef |g_t| of the iterate).
+        const double drift = shift_drift();
+        if (drift > s.tol && report.residual <= kShiftEagerness * drift && k < s.maxiter) {
+          update_shifts(0.0);
+          shifted(s, mu, u);
+          continue;
+        }
+      }
       const auto verdict = set_.check(k, report.residual, s.tol, p, mu, u, ops);
       if (verdict == Verdict::Converged) {
         if constexpr (B > 1) {
@@ -102,10 +113,27 @@ class IterativeSolver : public Solver {
 
   DualOperator op_;
   WorkingSet<Law> set_;
+  std::vector<double> shift_delta_;    // per row: the last move of its shift (friction)
   std::vector<double> g_;    // g(mu) on the working set; kept between solves (no allocation)
   double rho_ = 0.0;         // the step the method used, reported (0: none)
 
  private:
+  // Measured on a settling 3D pile (726 spheres, mu = 0.5, apgd): updating only once the
+  // problem of the old shifts is solved to tol took 835 iterations per step, at residual <=
+  // 0.5 x drift 394, at residual <= drift 175 (with the momentum kept), every iteration 272.
+  static constexpr double kShiftEagerness = 1.0;
+  // Largest |coef |g_t| - s_c| / scale over the working set, all processes.
+  double shift_drift()
+  {
+    const std::vector<double> &shift = op_.shift();
+    double worst = 0.0;
+    for (const int c : set_.rows()) {
+      const double *g = &g_[static_cast<size_t>(B) * c];
+      worst = std::max(worst, std::abs(coef(c) * std::hypot(g[1], g[2]) - shift[c]) /
+                                  set_.scale(c));
+    }
+    return op_.ops().max_all(worst);
+  }
   // Friction's normal shifts s_c = coef |g_t| (laws/coulomb.h) from the start multipliers.
   void start_shifts(const std::vector<double> &mu, std::vector<Vec3> &u)
   {
@@ -129,9 +157,11 @@ class IterativeSolver : public Solver {
                                   set_.scale(c));
     }
     if (!(op_.ops().max_all(worst) > tol)) return false;
+    shift_delta_.resize(shift.size());
     for (const int c : set_.rows()) {
       double *g = &g_[static_cast<size_t>(B) * c];
       const double next = coef(c) * std::hypot(g[1], g[2]);
+      shift_delta_[c] = next - shift[c];
       g[0] += next - shift[c];
       shift[c] = next;
     }
