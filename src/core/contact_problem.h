@@ -56,6 +56,7 @@ struct ContactProblem {
   std::vector<double> radius;
   std::vector<Vec3> w_free;
   std::vector<double> friction;
+  std::vector<double> rolling;    // rolling resistance coefficient per row (laws/rolling.h)
   std::vector<Vec3> tangent1, tangent2;
   std::vector<double> arm_i, arm_j;
 
@@ -74,6 +75,7 @@ struct ContactProblem {
     size.clear();
     counted.clear();
     friction.clear();
+    rolling.clear();
     tangent1.clear();
     tangent2.clear();
     arm_i.clear();
@@ -137,6 +139,18 @@ struct ContactProblem {
       if (rotates()) v += arm_j[c] * n.cross(u[nb + j]);
     }
     return v;
+  }
+
+  // The rolling radius of row c: a_i a_j / (a_i + a_j), or a_i against a wall.
+  double rolling_radius(int c) const
+  {
+    return is_wall(body_j[c]) ? arm_i[c] : arm_i[c] * arm_j[c] / (arm_i[c] + arm_j[c]);
+  }
+  // w_j - w_i of row c (w_wall = 0).
+  Vec3 relative_spin(int c, const std::vector<Vec3> &u) const
+  {
+    const int nb = n_bodies(), j = body_j[c];
+    return (is_wall(j) ? Vec3::Zero() : u[nb + j]) - u[nb + body_i[c]];
   }
 
   // g_c(u): the gap predicted after the step (eq. 15 left-hand side).

@@ -69,22 +69,29 @@ void DualOperator::forces(const std::vector<double> &mu, std::vector<Vec3> &forc
     const double *m = &mu[static_cast<size_t>(B) * c];
     if (!nonzero<B>(m)) continue;
     Vec3 f = m[0] * p.normal[c];
-    if constexpr (B == 3) f += m[1] * p.tangent1[c] + m[2] * p.tangent2[c];
+    if constexpr (B > 1) f += m[1] * p.tangent1[c] + m[2] * p.tangent2[c];
     const int i = p.body_i[c], j = p.body_j[c];
     if (i < p.n_owned) force[i] -= f;
     if (j >= 0 && j < p.n_owned) force[j] += f;
-    if constexpr (B == 3) {
+    if constexpr (B > 1) {
       if (!torque) continue;
       // the force on j acts at -a_j n, its opposite on i at +a_i n (apply_block)
       const Vec3 turn = p.normal[c].cross(f);
       if (i < p.n_owned) (*torque)[i] -= p.arm_i[c] * turn;
       if (j >= 0 && j < p.n_owned) (*torque)[j] -= p.arm_j[c] * turn;
+      if constexpr (B == 5) {
+        const Vec3 twist = p.rolling_radius(c) * (m[3] * p.tangent1[c] + m[4] * p.tangent2[c]);
+        if (i < p.n_owned) (*torque)[i] -= twist;
+        if (j >= 0 && j < p.n_owned) (*torque)[j] += twist;
+      }
     }
   }
 }
 template void DualOperator::forces<1>(const std::vector<double> &, std::vector<Vec3> &,
                                       std::vector<Vec3> *) const;
 template void DualOperator::forces<3>(const std::vector<double> &, std::vector<Vec3> &,
+                                      std::vector<Vec3> *) const;
+template void DualOperator::forces<5>(const std::vector<double> &, std::vector<Vec3> &,
                                       std::vector<Vec3> *) const;
 
 double dual_operator_bound(const ContactProblem &p, const std::vector<int> &rows,
@@ -114,6 +121,8 @@ void contact_forces(const ContactProblem &p, const std::vector<double> &mu,
 template void contact_forces<1>(const ContactProblem &, const std::vector<double> &,
                                 std::vector<Vec3> &, std::vector<Vec3> *);
 template void contact_forces<3>(const ContactProblem &, const std::vector<double> &,
+                                std::vector<Vec3> &, std::vector<Vec3> *);
+template void contact_forces<5>(const ContactProblem &, const std::vector<double> &,
                                 std::vector<Vec3> &, std::vector<Vec3> *);
 
 }    // namespace hardcontact

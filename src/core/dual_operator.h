@@ -81,12 +81,17 @@ class DualOperator {
     if constexpr (B == 1) {
       g[0] = gap(c, u);
     } else {
-      static_assert(B == 3, "blocks of 1 (normal) or 3 (Coulomb)");
+      static_assert(B == 3 || B == 5, "blocks of 1 (normal), 3 (Coulomb) or 5 (rolling)");
       const ContactProblem &p = *p_;
       const Vec3 v = p.h * p.slip_velocity(c, u);
       g[0] = p.gap[c] + p.normal[c].dot(v) + shift_[c];
       g[1] = p.tangent1[c].dot(v);
       g[2] = p.tangent2[c].dot(v);
+      if constexpr (B == 5) {
+        const Vec3 roll = (p.h * p.rolling_radius(c)) * p.relative_spin(c, u);
+        g[3] = p.tangent1[c].dot(roll);
+        g[4] = p.tangent2[c].dot(roll);
+      }
     }
   }
   // Adds the velocity change of an impulse h dmu G_c to the owned bodies of row c.
@@ -119,6 +124,13 @@ class DualOperator {
         u[j] += p.inv_mass[j] * impulse;
         if (p.rotates()) u[nb + j] -= (p.inv_inertia[j] * p.arm_j[c]) * turn;
       }
+      if constexpr (B == 5) {
+        // rolling: the angular impulse h R (m_r1 t_1 + m_r2 t_2) on j, its opposite on i
+        const Vec3 twist =
+            (p.h * p.rolling_radius(c)) * (dm[3] * p.tangent1[c] + dm[4] * p.tangent2[c]);
+        if (i < p.n_owned) u[nb + i] -= p.inv_inertia[i] * twist;
+        if (j >= 0 && j < p.n_owned) u[nb + j] += p.inv_inertia[j] * twist;
+      }
     }
   }
 
@@ -130,12 +142,21 @@ class DualOperator {
     return p.h * p.h * (p.inv_mass[p.body_i[c]] + (is_wall(j) ? 0.0 : p.inv_mass[j]));
   }
   // The largest eigenvalue of the block A_cc: with friction it is diagonal (n, t_1, t_2 are
-  // orthonormal and n x n = 0), its tangential entries h^2 sum (w + a^2 / I).
+  // orthonormal and n x n = 0), its tangential entries h^2 sum (w + a^2 / I). With rolling
+  // the spins couple the tangential and rolling entries: its trace bounds it (A_cc >= 0).
   template <int B>
   double block_diagonal(int c) const
   {
     if constexpr (B == 1) {
       return diagonal(c);
+    } else if constexpr (B == 5) {
+      const ContactProblem &p = *p_;
+      const int i = p.body_i[c], j = p.body_j[c];
+      const double r2 = p.rolling_radius(c) * p.rolling_radius(c);
+      double t = 3.0 * p.inv_mass[i] + p.inv_inertia[i] * (2.0 * p.arm_i[c] * p.arm_i[c] + 2.0 * r2);
+      if (!is_wall(j))
+        t += 3.0 * p.inv_mass[j] + p.inv_inertia[j] * (2.0 * p.arm_j[c] * p.arm_j[c] + 2.0 * r2);
+      return p.h * p.h * t;
     } else {
       const ContactProblem &p = *p_;
       const int i = p.body_i[c], j = p.body_j[c];
@@ -151,7 +172,8 @@ class DualOperator {
   // Gershgorin: the off-diagonal entries of row c are h^2 w_k n_c.n_d for rows d sharing body
   // k, so |A_cc| + sum |A_cd| <= h^2 (w_i deg_i + w_j deg_j) with deg_k the rows touching k.
   // With friction each of the B components of a row meets B of every row d on body k, each
-  // entry at most w_k + A_k^2 / I_k, A_k the longest arm on k. count_degrees() over the listed
+  // entry at most w_k + A_k^2 / I_k, A_k the longest arm on k (a rolling radius is shorter
+  // than either arm). count_degrees() over the listed
   // rows first (owners count, ghosts receive: an owner holds every row of its own bodies).
   void count_degrees(const std::vector<int> &rows);
   template <int B = 1>
@@ -213,7 +235,8 @@ class DualOperator {
   static bool nonzero(const double *m)
   {
     if constexpr (B == 1) return m[0] != 0.0;
-    else return m[0] != 0.0 || m[1] != 0.0 || m[2] != 0.0;
+    else if constexpr (B == 3) return m[0] != 0.0 || m[1] != 0.0 || m[2] != 0.0;
+    else return m[0] != 0.0 || m[1] != 0.0 || m[2] != 0.0 || m[3] != 0.0 || m[4] != 0.0;
   }
   // w + A^2 / I: bounds the inverse effective mass of a body's contact points in a
   // tangential direction (A^2 from count_degrees)

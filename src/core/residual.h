@@ -53,12 +53,14 @@ double row_scales(const ContactProblem &p, double tol, DistributedOps &ops,
 // block: multipliers per row (the normal force first).
 double clearing_work(const ContactProblem &p, const std::vector<double> &mu, int block = 1);
 
-// The coefficient a law reads for row c (friction; none for the normal law).
+// The coefficients a law reads for row c (none for the normal law).
 template <class Law>
-double law_coefficient(const ContactProblem &p, int c)
+Coefficients law_coefficients(const ContactProblem &p, int c)
 {
-  if constexpr (Law::block == 1) return 0.0;
-  else return p.friction[c];
+  Coefficients k;
+  if constexpr (Law::block > 1) k.friction = p.friction[c];
+  if constexpr (Law::block > 3) k.rolling = p.rolling[c];
+  return k;
 }
 
 // Largest Law::violation over all rows of all processes, at u = u(mu) (op bound to the
@@ -75,7 +77,7 @@ double residual(const DualOperator &op, const std::vector<double> &mu,
   for (int c = 0; c < nc; ++c) {
     op.gap_block<B>(c, u, g);
     const double v = Law::violation(g, &mu[static_cast<size_t>(B) * c],
-                                    law_coefficient<Law>(p, c), scale[c]);
+                                    law_coefficients<Law>(p, c), scale[c]);
     r = r > v ? r : v;
   }
   return op.ops().max_all(r);

@@ -42,9 +42,13 @@ class Solver {
                             std::vector<Vec3> &u) = 0;
 };
 
-// nullptr for an unknown name, or with friction (laws/coulomb.h: 3 multipliers per row,
-// mu[3 c..] = normal, tangent1, tangent2) for a solver without it.
-std::unique_ptr<Solver> make_solver(const std::string &name, bool friction = false);
+// The law of every row: the paper's (laws/normal.h, 1 multiplier per row), Coulomb friction
+// (laws/coulomb.h, mu[3 c..] = normal, tangent1, tangent2) or with rolling resistance too
+// (laws/rolling.h, 5 per row: then rolling1, rolling2).
+enum class ContactLaw { Normal, Coulomb, Rolling };
+// nullptr for an unknown name, or for a solver without the law.
+std::unique_ptr<Solver> make_solver(const std::string &name,
+                                    ContactLaw law = ContactLaw::Normal);
 bool solver_has_friction(const std::string &name);
 // The names make_solver knows, for error messages and docs.
 std::vector<std::string> solver_names();

@@ -1,6 +1,7 @@
 #include "working_set.h"
 
 #include "laws/coulomb.h"
+#include "laws/rolling.h"
 
 namespace hardcontact {
 
@@ -53,5 +54,6 @@ typename WorkingSet<Law>::Verdict WorkingSet<Law>::check(int k, double residual,
 
 template class WorkingSet<NormalLaw>;
 template class WorkingSet<CoulombLaw>;
+template class WorkingSet<RollingLaw>;
 
 }    // namespace hardcontact

@@ -40,10 +40,10 @@ class WorkingSet {
   const std::vector<int> &rows() const { return rows_; }
   bool contains(int c) const { return member_[c] != 0; }
   // Row c's violation in units of its scale, the quantity compared with tol (g, m: the row's
-  // Law::block components, coef: its coefficient).
-  double violation(int c, const double *g, const double *m, double coef) const
+  // Law::block components, k: its coefficients).
+  double violation(int c, const double *g, const double *m, const Coefficients &k) const
   {
-    return Law::violation(g, m, coef, scale_[c]);
+    return Law::violation(g, m, k, scale_[c]);
   }
   double scale(int c) const { return scale_[c]; }
   const std::vector<double> &scales() const { return scale_; }

@@ -3,9 +3,10 @@
 // and restart files. Atom i keeps (partner, k values) for each of its active contacts:
 // partner = atom ID of the other sphere, or the row's wall code j < 0 (contact_source.h).
 // Both atoms of a pair keep the entry, so each of the two processes that hold a pair across
-// processors finds the same values. k = the law's block size: 1, the normal force; 3 with
-// friction, kept as the force on the storing atom in the box frame (the partner keeps its
-// negation), so that the values survive a new tangent frame or a row seen from the other
+// processors finds the same values. Per contact the law's block (1: the normal force) is kept
+// as k values; with friction (block 3) as the force on the storing atom in the box frame (the
+// partner keeps its negation), with rolling (block 5) also the rolling force as a box-frame
+// vector (k = 6), so that the values survive a new tangent frame or a row seen from the other
 // atom (i and j swapped) and are read back as components in the row's frame.
 #pragma once
 
@@ -23,8 +24,9 @@ namespace hardcontact {
 
 class ContactHistory {
  public:
-  ContactHistory(LAMMPS_NS::Memory *memory, int values_per_contact) :
-      memory_(memory), k_(values_per_contact)
+  // block: the law's multipliers per contact (1, 3 or 5)
+  ContactHistory(LAMMPS_NS::Memory *memory, int block) :
+      memory_(memory), block_(block), k_(block == 1 ? 1 : block == 3 ? 3 : 6)
   {
   }
   ~ContactHistory();
@@ -33,7 +35,7 @@ class ContactHistory {
 
   int values_per_contact() const { return k_; }
 
-  // Start values of the rows: mu[k_ c + m] = value m stored for row c's pair, 0 if none
+  // Start values of the rows: mu[block c + m] = value m stored for row c's pair, 0 if none
   // (with friction: in the frame normal, tangent1, tangent2 of row c, which must be set).
   void load(const ContactProblem &p, const LAMMPS_NS::tagint *tag,
             std::vector<double> &mu) const;
@@ -60,6 +62,7 @@ class ContactHistory {
   const double *find(int i, double partner) const;
 
   LAMMPS_NS::Memory *memory_;
+  int block_;
   int k_;
   double **data_ = nullptr;    // nmax rows of 1 + stride() capacity_
   int nmax_ = 0;

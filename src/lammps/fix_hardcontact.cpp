@@ -13,6 +13,7 @@
 
 #include "../core/laws/coulomb.h"
 #include "../core/laws/normal.h"
+#include "../core/laws/rolling.h"
 
 using namespace LAMMPS_NS;
 using namespace FixConst;
@@ -28,6 +29,9 @@ hardcontact::FixOptions checked_options(LAMMPS *lmp, int narg, char **arg)
   if (!lmp->atom->tag_enable)
     lmp->error->all(FLERR, "Fix hardcontact requires atom IDs: remove 'atom_modify id no'");
   hardcontact::FixOptions o = hardcontact::parse_keywords(lmp, narg, arg, 3);
+  if (o.has_rolling() && !hardcontact::FixOptions::any_positive(o.friction))
+    lmp->error->all(FLERR, "Fix hardcontact rolling needs friction: add 'friction mu' (a "
+                           "sphere that can slide does not roll)");
   if (o.has_friction()) {
     if (!lmp->atom->omega_flag || !lmp->atom->torque_flag)
       lmp->error->all(FLERR, "Fix hardcontact friction requires atom attributes omega and "
@@ -39,17 +43,20 @@ hardcontact::FixOptions checked_options(LAMMPS *lmp, int narg, char **arg)
   return o;
 }
 
-// per contact: the law's multipliers (normal force; with friction its three components)
+// per contact: the law's multipliers (normal force; with friction its three components, with
+// rolling five)
 int history_values(const hardcontact::FixOptions &o)
 {
-  return o.has_friction() ? hardcontact::CoulombLaw::block : hardcontact::NormalLaw::block;
+  return o.has_rolling()    ? hardcontact::RollingLaw::block
+         : o.has_friction() ? hardcontact::CoulombLaw::block
+                            : hardcontact::NormalLaw::block;
 }
 
 }    // namespace
 
 FixHardContact::FixHardContact(LAMMPS *lmp, int narg, char **arg) :
     Fix(lmp, narg, arg), options_(checked_options(lmp, narg, arg)),
-    solver_(hardcontact::make_solver(options_.solver_name, options_.has_friction())), reach_(lmp), pairs_(lmp, groupbit),
+    solver_(hardcontact::make_solver(options_.solver_name, options_.contact_law())), reach_(lmp), pairs_(lmp, groupbit),
     walls_(lmp, groupbit, std::move(options_.walls), std::move(options_.wall_variables)),
     regions_(lmp, groupbit, std::move(options_.wall_regions)), obstacles_(walls_, regions_),
     history_(memory, history_values(options_)),
@@ -156,6 +163,7 @@ void FixHardContact::initial_integrate(int)
   effects.cohesion = &options_.cohesion;
   if (options_.has_friction()) {
     effects.friction = &options_.friction;
+    if (options_.has_rolling()) effects.rolling = &options_.rolling;
     effects.inertia = options_.disc ? 0.5 : 0.4;
   }
   const hardcontact::StepResult result =

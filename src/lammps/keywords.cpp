@@ -178,6 +178,16 @@ void parse_friction(LAMMPS *lmp, char **values, int n, FixOptions &o)
   set_pair_values(lmp, values, n, mu, o.friction);
 }
 
+void parse_rolling(LAMMPS *lmp, char **values, int n, FixOptions &o)
+{
+  const double mur = number(lmp, "rolling", values[0]);
+  if (mur < 0.0)
+    lmp->error->all(FLERR, "Fix hardcontact rolling must be a coefficient >= 0 (the rolling "
+                           "torque is at most rolling x R x the normal force), got {}",
+                    values[0]);
+  set_pair_values(lmp, values, n, mur, o.rolling);
+}
+
 void parse_disc(LAMMPS *lmp, char **, int, FixOptions &o)
 {
   if (lmp->domain->dimension != 2)
@@ -212,6 +222,9 @@ const Keyword keywords[] = {
     {"friction", 1, 2, parse_friction,
      "friction mu [I J]: Coulomb friction coefficient >= 0 for type pairs I J (all: default); "
      "walls use the value of the atom's type with itself"},
+    {"rolling", 1, 2, parse_rolling,
+     "rolling mur [I J]: rolling resistance >= 0 (torque at most mur R F_n) for type pairs I J "
+     "(all: default)"},
     {"disc", 0, 0, parse_disc, "disc: 2d discs, moment of inertia 1/2 m r^2"},
 };
 

@@ -31,11 +31,20 @@ struct FixOptions {
   // (the normal law alone, as if the keyword were absent)
   std::vector<double> friction;
   bool disc = false;    // 2d discs: I = 1/2 m r^2 (as fix nve/sphere disc), else 2/5 m r^2
+  // rolling resistance coefficient per type pair, (ntypes + 1)^2 row-major; needs friction
+  std::vector<double> rolling;
 
-  bool has_friction() const
+  bool has_friction() const { return any_positive(friction) || has_rolling(); }
+  bool has_rolling() const { return any_positive(rolling); }
+  ContactLaw contact_law() const
   {
-    for (const double mu : friction)
-      if (mu > 0.0) return true;
+    return has_rolling() ? ContactLaw::Rolling
+                         : has_friction() ? ContactLaw::Coulomb : ContactLaw::Normal;
+  }
+  static bool any_positive(const std::vector<double> &table)
+  {
+    for (const double v : table)
+      if (v > 0.0) return true;
     return false;
   }
 };

@@ -106,14 +106,15 @@ void Outputs::per_atom_and_local(const ContactProblem &p, const std::vector<doub
   const int nlocal = atom->nlocal;
   const int nc = p.n_contacts();
   double **array_atom = fix_->array_atom;
-  if (block == 3) contact_forces<3>(p, mu, force_, &torque_);
+  if (block == 5) contact_forces<5>(p, mu, force_, &torque_);
+  else if (block == 3) contact_forces<3>(p, mu, force_, &torque_);
   else contact_forces<1>(p, mu, force_);
   auto normal_force = [&](int c) { return mu[static_cast<size_t>(block) * c]; };
 
   for (int i = 0; i < nlocal; ++i) {
     array_atom[i][0] = 0.0;
     for (int k = 0; k < 3; ++k) array_atom[i][k + 1] = force_[i][k];
-    if (block == 3)
+    if (block > 1)
       for (int k = 0; k < 3; ++k) array_atom[i][k + 4] = torque_[i][k];
   }
   // rows, active rows, energy dissipated by friction in the step. Since u^{n+1} - u_free =
@@ -121,7 +122,7 @@ void Outputs::per_atom_and_local(const ContactProblem &p, const std::vector<doub
   // h sum_c mu_c . G_c (u_free + u^{n+1}) / 2: the tangential terms, -h F_t . (mean slip),
   // are what friction dissipates (>= 0: Coulomb's force opposes the slip).
   double counts[3] = {0.0, 0.0, 0.0};
-  if (block == 3) {
+  if (block > 1) {
     const int nb = p.n_bodies();
     u_free_.resize(2 * static_cast<size_t>(nb));
     std::copy(p.u_free.begin(), p.u_free.end(), u_free_.begin());
@@ -138,11 +139,16 @@ void Outputs::per_atom_and_local(const ContactProblem &p, const std::vector<doub
     if (here) {
       counts[1] += 1.0;
       ++nrows;
-      if (block == 3) {
-        const double *m = &mu[3 * static_cast<size_t>(c)];
+      if (block > 1) {
+        const double *m = &mu[static_cast<size_t>(block) * c];
         const Vec3 ft = m[1] * p.tangent1[c] + m[2] * p.tangent2[c];
         const Vec3 slip = 0.5 * (p.slip_velocity(c, u) + p.slip_velocity(c, u_free_));
         counts[2] -= p.h * ft.dot(slip);
+        if (block == 5) {    // rolling resistance: -h m_r . R (w_j - w_i), mean spin
+          const Vec3 fr = m[3] * p.tangent1[c] + m[4] * p.tangent2[c];
+          const Vec3 roll = 0.5 * (p.relative_spin(c, u) + p.relative_spin(c, u_free_));
+          counts[2] -= p.h * p.rolling_radius(c) * fr.dot(roll);
+        }
       }
     }
   }
@@ -169,8 +175,8 @@ void Outputs::per_atom_and_local(const ContactProblem &p, const std::vector<doub
     row[2] = normal_force(c);
     for (int k = 0; k < 3; ++k) row[3 + k] = p.normal[c][k];
     row[6] = is_wall(j) ? 1 + wall_index(j) : 0;    // in the order of the fix command, from 1
-    if (block != 3) continue;
-    const double *f = &mu[3 * static_cast<size_t>(c)];
+    if (block == 1) continue;
+    const double *f = &mu[static_cast<size_t>(block) * c];
     const Vec3 ft = f[1] * p.tangent1[c] + f[2] * p.tangent2[c];
     for (int k = 0; k < 3; ++k) row[7 + k] = ft[k];
     // on the cone up to the solver's round-off: sliding

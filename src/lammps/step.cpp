@@ -37,7 +37,7 @@ StepResult ContactStep::solve(Solver &solver, const SolverSettings &settings,
                               ContactHistory *history, const StepEffects &effects)
 {
   const bool restitution = effects.restitution && !effects.restitution->empty();
-  block_ = effects.friction ? 3 : 1;
+  block_ = effects.rolling ? 5 : effects.friction ? 3 : 1;
   const Bodies bodies = build_bodies(solver.traits().needs_owner_map, effects);
   RowSink sink(problem_, atom->tag, atom->nlocal, free_speed_);
   sink.set_wall_velocities(effects.wall_velocity);
@@ -67,6 +67,7 @@ StepResult ContactStep::solve(Solver &solver, const SolverSettings &settings,
     if (restitution) pair_values_of_rows(*effects.restitution, targeted, row_e_);
     if (effects.friction) {
       pair_values_of_rows(*effects.friction, targeted, problem_.friction);
+      if (effects.rolling) pair_values_of_rows(*effects.rolling, targeted, problem_.rolling);
       problem_.complete_frames(targeted);
     }
     targets.apply(problem_, targeted);

@@ -41,6 +41,8 @@ struct StepEffects {
   // the solver must be one made for friction (core/laws/coulomb.h). I = inertia m r^2.
   const std::vector<double> *friction = nullptr;
   double inertia = 0.4;
+  // rolling resistance per type pair, null for none (needs friction; core/laws/rolling.h)
+  const std::vector<double> *rolling = nullptr;
 };
 
 class ContactStep : protected LAMMPS_NS::Pointers {
@@ -62,7 +64,7 @@ class ContactStep : protected LAMMPS_NS::Pointers {
 
   const ContactProblem &problem() const { return problem_; }
   // The contact forces of the last step (mu, or mu' - F with cohesion: core/cohesion.h),
-  // block() values per row (3 with friction: normal, tangent1, tangent2).
+  // block() values per row (3 with friction: normal, tangent1, tangent2; 5 with rolling).
   const std::vector<double> &mu() const { return pull_any_ ? force_ : mu_; }
   int block() const { return block_; }
   const std::vector<Vec3> &u() const { return u_; }

@@ -10,6 +10,9 @@
 #include "random_config.h"
 
 #include "solver.h"
+#include "laws/rolling.h"
+
+#include <random>
 
 #include <gtest/gtest.h>
 
@@ -43,7 +46,7 @@ struct Solved {
 
 Solved solve(const ContactProblem &p, const std::string &name, double tol = 1e-8)
 {
-  auto solver = hardcontact::make_solver(name, true);
+  auto solver = hardcontact::make_solver(name, hardcontact::ContactLaw::Coulomb);
   EXPECT_TRUE(solver) << name;
   SerialOps ops;
   SolverSettings s;
@@ -196,9 +199,103 @@ TEST(Friction, SolversAgreeOnRandomPackings)
   }
 }
 
+// The projection onto {|t| <= mu n, |r| <= mur n} against a search over the normal value
+// (for each n' the two discs project independently, and the distance is convex in n':
+// ternary search): the same point, and the result inside the set.
+TEST(Friction, RollingProjectionIsTheNearestPoint)
+{
+  std::mt19937 gen(5);
+  std::uniform_real_distribution<double> U(-2.0, 2.0), C(0.0, 1.0);
+  for (int trial = 0; trial < 2000; ++trial) {
+    const hardcontact::Coefficients k{C(gen), trial % 7 == 0 ? 0.0 : C(gen)};
+    double m[5];
+    for (double &v : m) v = U(gen);
+    double p[5];
+    std::copy(m, m + 5, p);
+    hardcontact::RollingLaw::project(p, k);
+    auto clip = [](const double *v, double cap, double *out) {
+      const double len = std::hypot(v[0], v[1]);
+      const double f = len > cap ? (len > 0.0 ? cap / len : 0.0) : 1.0;
+      out[0] = f * v[0];
+      out[1] = f * v[1];
+    };
+    auto dist2 = [&](double n) {
+      double q[5] = {n};
+      clip(m + 1, k.friction * n, q + 1);
+      clip(m + 3, k.rolling * n, q + 3);
+      double d = 0.0;
+      for (int a = 0; a < 5; ++a) d += (q[a] - m[a]) * (q[a] - m[a]);
+      return d;
+    };
+    double lo = 0.0, hi = 8.0;
+    for (int it = 0; it < 200; ++it) {
+      const double a = lo + (hi - lo) / 3.0, b = hi - (hi - lo) / 3.0;
+      if (dist2(a) <= dist2(b)) hi = b;
+      else lo = a;
+    }
+    EXPECT_NEAR(p[0], 0.5 * (lo + hi), 1e-7) << trial;
+    EXPECT_LE(std::hypot(p[1], p[2]), k.friction * p[0] * (1 + 1e-12) + 1e-300) << trial;
+    EXPECT_LE(std::hypot(p[3], p[4]), k.rolling * p[0] * (1 + 1e-12) + 1e-300) << trial;
+  }
+}
+
+TEST(Friction, RollingSolversAgreeAndConserveMomentum)
+{
+  hctest::RandomConfigOptions o;
+  o.n = 50;
+  o.box = 6.0;
+  o.mass_decades = 1.0;
+  o.walls = false;
+  hctest::RandomConfig c = hctest::random_config(5, o);
+  std::vector<Vec3> w(c.p.n_bodies());
+  for (int b = 0; b < c.p.n_bodies(); ++b) w[b] = Vec3(std::sin(b), std::cos(3 * b), 0.5);
+  add_friction(c.p, c.r, 0.5, w);
+  c.p.rolling.assign(c.p.n_contacts(), 0.2);
+  std::vector<Vec3> u_free(c.p.u_free);
+  u_free.insert(u_free.end(), w.begin(), w.end());
+  const double e_free = kinetic2(c.p, u_free);
+  const double tol = 1e-8;
+  auto run = [&](const char *name) {
+    auto solver = hardcontact::make_solver(name, hardcontact::ContactLaw::Rolling);
+    SerialOps ops;
+    SolverSettings s;
+    s.tol = tol;
+    s.maxiter = 400000;
+    Solved out;
+    out.report = solver->solve(c.p, s, ops, out.mu, out.u);
+    EXPECT_TRUE(out.report.converged) << name << " " << out.report.residual;
+    return out;
+  };
+  const Solved a = run("apgd");
+  const int n = c.p.n_bodies();
+  Vec3 P0 = Vec3::Zero(), L0 = Vec3::Zero();
+  for (int b = 0; b < n; ++b) {
+    const double m = 1.0 / c.p.inv_mass[b];
+    P0 += m * c.p.u_free[b];
+    L0 += m * c.q[b].cross(c.p.u_free[b]) + w[b] / c.p.inv_inertia[b];
+  }
+  for (const char *name : {"apgd", "pgs", "uzawa"}) {
+    const Solved s = run(name);
+    EXPECT_LE(kinetic2(c.p, s.u), e_free * (1.0 + 1e-12)) << name;
+    double worst = 0.0;
+    for (size_t d = 0; d < s.u.size(); ++d) worst = std::max(worst, (s.u[d] - a.u[d]).norm());
+    EXPECT_LT(worst, 1e-4) << name;
+    Vec3 P = Vec3::Zero(), L = Vec3::Zero();
+    for (int b = 0; b < n; ++b) {
+      const double m = 1.0 / c.p.inv_mass[b];
+      P += m * s.u[b];
+      L += m * c.q[b].cross(s.u[b]) + s.u[n + b] / c.p.inv_inertia[b];
+    }
+    EXPECT_LT((P - P0).norm(), 1e-11 * P0.norm() + 1e-11) << name;
+    EXPECT_LT((L - L0).norm(), 1e-11 * L0.norm() + 1e-11) << name;
+    for (int r = 0; r < c.p.n_contacts(); ++r)
+      EXPECT_GE(c.p.predicted_gap(r, s.u), -2.0 * tol * c.p.size[r]) << name;
+  }
+}
+
 TEST(Friction, ExactSolverHasNoFriction)
 {
-  EXPECT_FALSE(hardcontact::make_solver("exact", true));
+  EXPECT_FALSE(hardcontact::make_solver("exact", hardcontact::ContactLaw::Coulomb));
   EXPECT_FALSE(hardcontact::solver_has_friction("exact"));
   EXPECT_TRUE(hardcontact::solver_has_friction("apgd"));
 }

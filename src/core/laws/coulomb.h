@@ -11,6 +11,8 @@
 // the contact does the work -coef m_n |v_t| <= 0.
 #pragma once
 
+#include "law.h"
+
 #include <cmath>
 
 namespace hardcontact {
@@ -20,7 +22,9 @@ struct CoulombLaw {
 
   // Euclidean projection onto K: itself inside, 0 in the polar cone (coef |t| <= -n), else
   // onto the cone's surface along the normal of the boundary.
-  static void project(double *m, double coef)
+  static void project(double *m, const Coefficients &k) { project_cone(m, k.friction); }
+  // Euclidean projection of (m[0], m[1], m[2]) onto {|m_t| <= coef m_n}.
+  static void project_cone(double *m, double coef)
   {
     const double n = m[0];
     const double t = std::hypot(m[1], m[2]);
@@ -41,8 +45,9 @@ struct CoulombLaw {
   // real gap >= 0). A pushing contact: stick (|m_t| < coef m_n) asks g_t = 0 and g_n = 0;
   // slide asks g_t against m_t and g_n = coef |g_t|. With q = m_t / (coef m_n) both read
   //   d_t = g_t + |g_t| q = 0,   d_n = g_n - coef |g_t| |q| = 0.
-  static double violation(const double *g, const double *m, double coef, double scale)
+  static double violation(const double *g, const double *m, const Coefficients &k, double scale)
   {
+    const double coef = k.friction;
     const double gt = std::hypot(g[1], g[2]);
     if (m[0] <= 0.0) {
       const double v = coef * gt - g[0];
@@ -54,6 +59,11 @@ struct CoulombLaw {
     const double dn = std::abs(g[0] - coef * gt * std::hypot(q1, q2));
     const double dt = std::hypot(g[1] + gt * q1, g[2] + gt * q2);
     return (dn > dt ? dn : dt) / scale;
+  }
+
+  static double shift(const double *g, const Coefficients &k)
+  {
+    return k.friction * std::hypot(g[1], g[2]);
   }
 };
 

@@ -1,14 +1,8 @@
 // The paper's contact law (eq. 17-18): one multiplier per contact, the normal force mu >= 0,
-// complementary to the predicted gap g >= 0. A law is the set the multipliers may take; the
-// solvers are written against this interface (templates, no virtual call per contact):
-//   block                   multipliers per contact (and components of g, the gradient of the
-//                           dual: the predicted gap first, then tangential displacements)
-//   project(m, coef)        the nearest admissible block m[0..block) (the projection of the
-//                           dual method, 3.3); coef: the row's coefficient (friction)
-//   violation(g, m, coef, s) how far (g, m) is from complementarity, in units of the row
-//                           scale s
-// Other laws are headers beside this one (coulomb.h).
+// complementary to the predicted gap g >= 0 (law.h: the interface every law follows).
 #pragma once
+
+#include "law.h"
 
 namespace hardcontact {
 
@@ -26,11 +20,12 @@ struct NormalLaw {
   }
 
   // The block forms the solvers use (block 1: the scalar forms above).
-  static void project(double *m, double) { m[0] = project(m[0]); }
-  static double violation(const double *g, const double *m, double, double scale)
+  static void project(double *m, const Coefficients &) { m[0] = project(m[0]); }
+  static double violation(const double *g, const double *m, const Coefficients &, double scale)
   {
     return violation(g[0], m[0], scale);
   }
+  static double shift(const double *, const Coefficients &) { return 0.0; }
 };
 
 }    // namespace hardcontact

@@ -188,5 +188,6 @@ bool ApgdSolver<Law>::step(const SolverSettings &, std::vector<double> &mu, std:
 
 template class ApgdSolver<NormalLaw>;
 template class ApgdSolver<CoulombLaw>;
+template class ApgdSolver<RollingLaw>;
 
 }    // namespace hardcontact

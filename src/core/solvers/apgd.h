@@ -6,6 +6,7 @@
 
 #include "../laws/coulomb.h"
 #include "../laws/normal.h"
+#include "../laws/rolling.h"
 #include "iterative_solver.h"
 
 namespace hardcontact {
@@ -42,5 +43,6 @@ class ApgdSolver : public IterativeSolver<Law> {
 
 using Apgd = ApgdSolver<NormalLaw>;
 using ApgdFriction = ApgdSolver<CoulombLaw>;
+using ApgdRolling = ApgdSolver<RollingLaw>;
 
 }    // namespace hardcontact

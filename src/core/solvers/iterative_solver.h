@@ -38,7 +38,7 @@ class IterativeSolver : public Solver {
       if constexpr (B > 1) {
         // Friction's fixed point: solving the problem of stale shifts further than they are
         // off is wasted work, so the shifts move as soon as the residual is below their drift
-        // (the drift: how far the shifts are from coef |g_t| of the iterate).
+        // (the drift: how far the shifts are from Law::shift of the iterate).
         const double drift = shift_drift();
         if (drift > s.tol && report.residual <= kShiftEagerness * drift && k < s.maxiter) {
           update_shifts(0.0);
@@ -73,8 +73,11 @@ class IterativeSolver : public Solver {
   using Verdict = typename WorkingSet<Law>::Verdict;
   static constexpr int B = Law::block;
 
-  static double coef(const ContactProblem &p, int c) { return law_coefficient<Law>(p, c); }
-  double coef(int c) const { return coef(op_.problem(), c); }
+  static Coefficients coef(const ContactProblem &p, int c)
+  {
+    return law_coefficients<Law>(p, c);
+  }
+  Coefficients coef(int c) const { return coef(op_.problem(), c); }
 
   // Once per solve, after the working set is made: u = u(mu), and the solver's own state.
   virtual void start(const SolverSettings &s, std::vector<double> &mu, std::vector<Vec3> &u)
@@ -122,19 +125,19 @@ class IterativeSolver : public Solver {
   // problem of the old shifts is solved to tol took 835 iterations per step, at residual <=
   // 0.5 x drift 394, at residual <= drift 175 (with the momentum kept), every iteration 272.
   static constexpr double kShiftEagerness = 1.0;
-  // Largest |coef |g_t| - s_c| / scale over the working set, all processes.
+  // Largest |Law::shift - s_c| / scale over the working set, all processes.
   double shift_drift()
   {
     const std::vector<double> &shift = op_.shift();
     double worst = 0.0;
     for (const int c : set_.rows()) {
       const double *g = &g_[static_cast<size_t>(B) * c];
-      worst = std::max(worst, std::abs(coef(c) * std::hypot(g[1], g[2]) - shift[c]) /
+      worst = std::max(worst, std::abs(Law::shift(g, coef(c)) - shift[c]) /
                                   set_.scale(c));
     }
     return op_.ops().max_all(worst);
   }
-  // Friction's normal shifts s_c = coef |g_t| (laws/coulomb.h) from the start multipliers.
+  // Friction's normal shifts s_c = Law::shift (laws/law.h) from the start multipliers.
   void start_shifts(const std::vector<double> &mu, std::vector<Vec3> &u)
   {
     op_.template velocities<B>(set_.rows(), mu, u);
@@ -142,7 +145,7 @@ class IterativeSolver : public Solver {
     double g[B];
     for (const int c : set_.rows()) {
       op_.template gap_block<B>(c, u, g);
-      shift[c] = coef(c) * std::hypot(g[1], g[2]);
+      shift[c] = Law::shift(g, coef(c));
     }
   }
   // The shifts of the current iterate (g_ at u(mu)); true if any moved by more than tol of its
@@ -153,14 +156,14 @@ class IterativeSolver : public Solver {
     double worst = 0.0;
     for (const int c : set_.rows()) {
       const double *g = &g_[static_cast<size_t>(B) * c];
-      worst = std::max(worst, std::abs(coef(c) * std::hypot(g[1], g[2]) - shift[c]) /
+      worst = std::max(worst, std::abs(Law::shift(g, coef(c)) - shift[c]) /
                                   set_.scale(c));
     }
     if (!(op_.ops().max_all(worst) > tol)) return false;
     shift_delta_.resize(shift.size());
     for (const int c : set_.rows()) {
       double *g = &g_[static_cast<size_t>(B) * c];
-      const double next = coef(c) * std::hypot(g[1], g[2]);
+      const double next = Law::shift(g, coef(c));
       shift_delta_[c] = next - shift[c];
       g[0] += next - shift[c];
       shift[c] = next;

@@ -56,5 +56,6 @@ bool PgsSolver<Law>::step(const SolverSettings &, std::vector<double> &mu, std::
 
 template class PgsSolver<NormalLaw>;
 template class PgsSolver<CoulombLaw>;
+template class PgsSolver<RollingLaw>;
 
 }    // namespace hardcontact

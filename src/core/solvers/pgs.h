@@ -12,6 +12,7 @@
 
 #include "../laws/coulomb.h"
 #include "../laws/normal.h"
+#include "../laws/rolling.h"
 #include "iterative_solver.h"
 
 namespace hardcontact {
@@ -30,5 +31,6 @@ class PgsSolver : public IterativeSolver<Law> {
 
 using Pgs = PgsSolver<NormalLaw>;
 using PgsFriction = PgsSolver<CoulombLaw>;
+using PgsRolling = PgsSolver<RollingLaw>;
 
 }    // namespace hardcontact

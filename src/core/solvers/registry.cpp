@@ -12,24 +12,30 @@ struct Entry {
   const char *name;
   std::unique_ptr<Solver> (*create)();             // the paper's law (laws/normal.h)
   std::unique_ptr<Solver> (*create_friction)();    // Coulomb's (laws/coulomb.h); null: none
+  std::unique_ptr<Solver> (*create_rolling)();     // with rolling (laws/rolling.h); null: none
 };
 const Entry registry[] = {
     {"uzawa", [] { return std::unique_ptr<Solver>(new Uzawa()); },
-     [] { return std::unique_ptr<Solver>(new UzawaFriction()); }},
+     [] { return std::unique_ptr<Solver>(new UzawaFriction()); },
+     [] { return std::unique_ptr<Solver>(new UzawaRolling()); }},
     {"apgd", [] { return std::unique_ptr<Solver>(new Apgd()); },
-     [] { return std::unique_ptr<Solver>(new ApgdFriction()); }},
+     [] { return std::unique_ptr<Solver>(new ApgdFriction()); },
+     [] { return std::unique_ptr<Solver>(new ApgdRolling()); }},
     {"pgs", [] { return std::unique_ptr<Solver>(new Pgs()); },
-     [] { return std::unique_ptr<Solver>(new PgsFriction()); }},
-    {"exact", [] { return std::unique_ptr<Solver>(new Exact()); }, nullptr},
+     [] { return std::unique_ptr<Solver>(new PgsFriction()); },
+     [] { return std::unique_ptr<Solver>(new PgsRolling()); }},
+    {"exact", [] { return std::unique_ptr<Solver>(new Exact()); }, nullptr, nullptr},
 };
 }    // namespace
 
-std::unique_ptr<Solver> make_solver(const std::string &name, bool friction)
+std::unique_ptr<Solver> make_solver(const std::string &name, ContactLaw law)
 {
   for (const Entry &e : registry) {
     if (name != e.name) continue;
-    if (!friction) return e.create();
-    return e.create_friction ? e.create_friction() : nullptr;
+    auto create = law == ContactLaw::Normal    ? e.create
+                  : law == ContactLaw::Coulomb ? e.create_friction
+                                               : e.create_rolling;
+    return create ? create() : nullptr;
   }
   return nullptr;
 }

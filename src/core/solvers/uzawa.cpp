@@ -34,5 +34,6 @@ bool UzawaSolver<Law>::step(const SolverSettings &, std::vector<double> &mu,
 
 template class UzawaSolver<NormalLaw>;
 template class UzawaSolver<CoulombLaw>;
+template class UzawaSolver<RollingLaw>;
 
 }    // namespace hardcontact

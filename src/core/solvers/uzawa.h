@@ -4,6 +4,7 @@
 
 #include "../laws/coulomb.h"
 #include "../laws/normal.h"
+#include "../laws/rolling.h"
 #include "iterative_solver.h"
 
 namespace hardcontact {
@@ -19,5 +20,6 @@ class UzawaSolver : public IterativeSolver<Law> {
 
 using Uzawa = UzawaSolver<NormalLaw>;
 using UzawaFriction = UzawaSolver<CoulombLaw>;
+using UzawaRolling = UzawaSolver<RollingLaw>;
 
 }    // namespace hardcontact

@@ -1,0 +1,21 @@
+// What every contact law shares. A law is the set the multipliers of one contact may take;
+// the solvers are written against this interface (templates, no virtual call per contact):
+//   block                   multipliers per contact, and components of g, the gradient of the
+//                           dual: the predicted gap first, then (friction) tangential
+//                           displacements h t_k . v_slip, then (rolling) h R t_k . (w_j - w_i)
+//   project(m, k)           the nearest admissible block m[0..block) (the projection of the
+//                           dual method, section 3.3), k: the row's coefficients
+//   violation(g, m, k, s)   how far (g, m) is from complementarity, in units of the row scale s
+//   shift(g, k)             the normal target shift that removes the convex relaxation's
+//                           lift-off at the fixed point (De Saxce), 0 for the normal law
+#pragma once
+
+namespace hardcontact {
+
+// The coefficients of one row (ContactProblem::friction, ::rolling): what a law reads.
+struct Coefficients {
+  double friction = 0.0;
+  double rolling = 0.0;
+};
+
+}    // namespace hardcontact
