@@ -30,7 +30,7 @@ class IterativeSolver : public Solver {
     set_.init(p, mu, s.tol, ops);
     if constexpr (B > 1) {
       start_shifts(mu, u);
-      frozen_ = false;
+      downward_ = false;
       best_drift_ = 1e300;
       stalled_ = 0;
     }
@@ -44,14 +44,14 @@ class IterativeSolver : public Solver {
         // Friction's fixed point: solving the problem of stale shifts further than they are
         // off is wasted work, so the shifts move as soon as the residual is below their drift
         // (the drift: how far the shifts are from Law::shift of the iterate).
-        const double drift = frozen_ ? 0.0 : shift_drift();
+        const double drift = shift_drift();
         if (drift > s.tol && report.residual <= kShiftEagerness * drift && k < s.maxiter) {
-          // a fixed point that stopped approaching: keep the shifts (see frozen_)
+          // a fixed point that stopped approaching: from now on shifts only go down
           if (drift < 0.5 * best_drift_) {
             best_drift_ = drift;
             stalled_ = 0;
-          } else if (++stalled_ > kMaxStalledShifts) {
-            frozen_ = true;
+          } else if (!downward_ && ++stalled_ > kMaxStalledShifts) {
+            downward_ = true;
             continue;
           }
           update_shifts(0.0);
@@ -63,7 +63,7 @@ class IterativeSolver : public Solver {
       if (verdict == Verdict::Converged) {
         if constexpr (B > 1) {
           // the problem solved had the last shifts: converged once they are its own
-          if (!frozen_ && k < s.maxiter && update_shifts(s.tol)) {
+          if (k < s.maxiter && update_shifts(s.tol)) {
             shifted(s, mu, u);
             continue;
           }
@@ -154,23 +154,27 @@ class IterativeSolver : public Solver {
   static constexpr double kShiftEagerness = 1.0;
   // The fixed point may have no solution or stop approaching it (a sliding contact whose shift
   // changes the slip that sets it, e.g. wedged spheres under impact): after this many moves
-  // without the drift halving, the shifts of the solve are kept as they are (frozen), and the
-  // solve ends when the problem with those shifts is solved. The lift-off (or overlap) of a
-  // sliding contact in that step is then bounded by the drift at that moment.
+  // without the drift halving, the shifts only go down: s <- min(s, Law::shift). That sequence
+  // converges (monotone, bounded below by 0), and at its end no shift exceeds its contact's
+  // own value, so the stall leaves no overlap, only a lift-off of sliding contacts below the
+  // relaxation's h mu |v_t| in that step.
   static constexpr int kMaxStalledShifts = 50;
-  bool frozen_ = false;
+  bool downward_ = false;
   double best_drift_ = 0.0;
   int stalled_ = 0;
-  // Largest |Law::shift - s_c| / scale over the working set, all processes.
+  // The shift row c moves to at the current iterate (g_ at u(mu)).
+  double next_shift(int c) const
+  {
+    const double next = Law::shift(&g_[static_cast<size_t>(B) * c], coef(c));
+    const double now = op_.shift(c);
+    return downward_ && next > now ? now : next;
+  }
+  // Largest |next_shift - s_c| / scale over the working set, all processes.
   double shift_drift()
   {
-    const std::vector<double> &shift = op_.shift();
     double worst = 0.0;
-    for (const int c : set_.rows()) {
-      const double *g = &g_[static_cast<size_t>(B) * c];
-      worst = std::max(worst, std::abs(Law::shift(g, coef(c)) - shift[c]) /
-                                  set_.scale(c));
-    }
+    for (const int c : set_.rows())
+      worst = std::max(worst, std::abs(next_shift(c) - op_.shift(c)) / set_.scale(c));
     return op_.ops().max_all(worst);
   }
   // Friction's normal shifts s_c = Law::shift (laws/law.h) from the start multipliers.
@@ -188,20 +192,13 @@ class IterativeSolver : public Solver {
   // row scale, in which case they and g_ are updated.
   bool update_shifts(double tol)
   {
+    if (!(shift_drift() > tol)) return false;
     std::vector<double> &shift = op_.shift();
-    double worst = 0.0;
-    for (const int c : set_.rows()) {
-      const double *g = &g_[static_cast<size_t>(B) * c];
-      worst = std::max(worst, std::abs(Law::shift(g, coef(c)) - shift[c]) /
-                                  set_.scale(c));
-    }
-    if (!(op_.ops().max_all(worst) > tol)) return false;
     shift_delta_.resize(shift.size());
     for (const int c : set_.rows()) {
-      double *g = &g_[static_cast<size_t>(B) * c];
-      const double next = Law::shift(g, coef(c));
+      const double next = next_shift(c);
       shift_delta_[c] = next - shift[c];
-      g[0] += next - shift[c];
+      g_[static_cast<size_t>(B) * c] += next - shift[c];
       shift[c] = next;
     }
     return true;
