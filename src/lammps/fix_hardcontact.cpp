@@ -89,20 +89,19 @@ FixHardContact::FixHardContact(LAMMPS *lmp, int narg, char **arg) :
 
   // per-atom data (outputs, contact history) travels with atoms and restart files
   restart_peratom = 1;
-  maxexchange_dynamic = 1;
   create_attribute = 1;    // atoms created during the run (fix pour) start with no history
   array_atom = nullptr;
   array_local = nullptr;
   grow_arrays(atom->nmax);
-  atom->add_callback(Atom::GROW);
-  atom->add_callback(Atom::RESTART);
+  atom->add_callback(hardcontact::compat::kAtomGrowCallback);
+  atom->add_callback(hardcontact::compat::kAtomRestartCallback);
   for (int i = 0; i < atom->nlocal; ++i) outputs_.clear_per_atom(i);
 }
 
 FixHardContact::~FixHardContact()
 {
-  atom->delete_callback(id, Atom::GROW);
-  atom->delete_callback(id, Atom::RESTART);
+  atom->delete_callback(id, hardcontact::compat::kAtomGrowCallback);
+  atom->delete_callback(id, hardcontact::compat::kAtomRestartCallback);
 }
 
 int FixHardContact::setmask()
@@ -120,10 +119,12 @@ void FixHardContact::init()
   walls_.check_in_box();
   regions_.init(static_cast<int>(walls_.walls().size()));
   if (!solver_->traits().distributed && comm->nprocs > 1)
-    error->all(FLERR, "Fix hardcontact solver {} runs on one processor only (it assembles "
-                      "the whole contact operator): use apgd, pgs or uzawa with mpirun",
-               options_.solver_name);
-  reach_.init(this, instance_me);
+    hardcontact::compat::error_all(
+        error, FLERR,
+        "Fix hardcontact solver {} runs on one processor only (it assembles "
+        "the whole contact operator): use apgd, pgs or uzawa with mpirun",
+        options_.solver_name);
+  reach_.init(this, HARDCONTACT_FIX_INSTANCE);
 }
 
 void FixHardContact::init_list(int, NeighList *ptr)
@@ -196,7 +197,8 @@ double FixHardContact::memory_usage()
 // What an atom carries when it migrates: its outputs, then its contact history.
 void FixHardContact::history_resized()
 {
-  maxexchange = outputs_.per_atom_columns() + history_.max_packed_size();
+  hardcontact::compat::set_exchange_size(
+      this, comm, outputs_.per_atom_columns() + history_.max_packed_size());
 }
 
 void FixHardContact::grow_arrays(int nmax)

@@ -8,6 +8,7 @@
 #include "contact_history.h"
 #include "integrate.h"
 #include "keywords.h"
+#include "lammps_compat.h"
 #include "lammps_ops.h"
 #include "neighbor_reach.h"
 #include "outputs.h"
@@ -29,8 +30,8 @@ class FixHardContact : public Fix {
   void init() override;
   void init_list(int, class NeighList *) override;
   void setup(int) override;
-  void setup_post_neighbor() override;
-  void post_neighbor() override;
+  void setup_post_neighbor() HARDCONTACT_LAMMPS_OVERRIDE;
+  void post_neighbor() HARDCONTACT_LAMMPS_OVERRIDE;
   void initial_integrate(int) override;
   void post_run() override;
 
@@ -46,8 +47,13 @@ class FixHardContact : public Fix {
   void unpack_restart(int, int) override;
   int size_restart(int) override;
   int maxsize_restart() override;
-  int pack_forward_comm(int, int *, double *, int, int *) override;
-  void unpack_forward_comm(int, int, double *) override;
+  int pack_forward_comm(int, int *, double *, int, int *) HARDCONTACT_LAMMPS_OVERRIDE;
+  void unpack_forward_comm(int, int, double *) HARDCONTACT_LAMMPS_OVERRIDE;
+
+ protected:
+  // how far the neighbour list and ghosts reach (2 r_max + skin): the LIGGGHTS fix sizes the
+  // stencil with it (src/liggghts/fix_hardcontact_liggghts.h)
+  double reach_cutoff() const { return reach_.cutoff(); }
 
  private:
   hardcontact::FixOptions options_;    // the keywords (keywords.h)

@@ -1,5 +1,7 @@
 #include "integrate.h"
 
+#include "lammps_compat.h"
+
 #include "atom.h"
 #include "error.h"
 #include "force.h"
@@ -105,11 +107,13 @@ bool Integrate::move(const std::vector<Vec3> &u, int spins)
 
   const double skin = neighbor->skin;
   if (all.now[0] + all.now[1] >= skin)
-    error->all(FLERR, "Fix hardcontact: at step {} two atoms moved {:.6g} and {:.6g} since the "
+    compat::error_all(error, FLERR,
+                      "Fix hardcontact: at step {} two atoms moved {:.6g} and {:.6g} since the "
                       "last neighbor list build, together more than the skin ({:.6g}), so a "
                       "contact may have been missed. The largest move in one step was {:.6g}: "
-                      "use 'neighbor {:.3g} bin' or a smaller timestep", update->ntimestep,
-               all.now[0], all.now[1], skin, all.step, MAX(2.0 * skin, 8.0 * all.step));
+                      "use 'neighbor {:.3g} bin' or a smaller timestep",
+                      update->ntimestep, all.now[0], all.now[1], skin, all.step,
+                      MAX(2.0 * skin, 8.0 * all.step));
   return all.ahead[0] + all.ahead[1] >= skin;
 }
 

@@ -1,5 +1,7 @@
 #include "keywords.h"
 
+#include "lammps_compat.h"
+
 #include "atom.h"
 #include "domain.h"
 #include "error.h"
@@ -30,11 +32,13 @@ struct Keyword {
 double number(LAMMPS *lmp, const char *keyword, const char *word)
 {
   if (!utils::is_double(word))
-    lmp->error->all(FLERR, "Fix hardcontact {}: expected a number, got '{}'", keyword, word);
+    compat::error_all(lmp->error, FLERR, "Fix hardcontact {}: expected a number, got '{}'", keyword,
+                      word);
   // Checked before utils::numeric: modern LAMMPS stops there on 1e999 with a message that
   // does not name the keyword.
   if (!std::isfinite(std::strtod(word, nullptr)))
-    lmp->error->all(FLERR, "Fix hardcontact {}: value '{}' is not a finite number", keyword, word);
+    compat::error_all(lmp->error, FLERR, "Fix hardcontact {}: value '{}' is not a finite number",
+                      keyword, word);
   return utils::numeric(FLERR, word, false, lmp);
 }
 
@@ -49,26 +53,30 @@ void parse_solver(LAMMPS *lmp, char **values, int, FixOptions &o)
 {
   o.solver_name = values[0];
   if (!make_solver(o.solver_name))
-    lmp->error->all(FLERR, "Fix hardcontact solver '{}' is unknown: use one of {}", o.solver_name,
-                    joined(solver_names()));
+    compat::error_all(lmp->error, FLERR, "Fix hardcontact solver '{}' is unknown: use one of {}",
+                      o.solver_name, joined(solver_names()));
 }
 
 void parse_tol(LAMMPS *lmp, char **values, int, FixOptions &o)
 {
   o.settings.tol = number(lmp, "tol", values[0]);
   if (o.settings.tol <= 0.0 || o.settings.tol >= 1.0)
-    lmp->error->all(FLERR, "Fix hardcontact tol must be in (0, 1) (an overlap relative to the "
-                           "contact size), got {}", values[0]);
+    compat::error_all(lmp->error, FLERR,
+                      "Fix hardcontact tol must be in (0, 1) (an overlap relative to the "
+                      "contact size), got {}",
+                      values[0]);
 }
 
 void parse_maxiter(LAMMPS *lmp, char **values, int, FixOptions &o)
 {
   if (!utils::is_integer(values[0]))
-    lmp->error->all(FLERR, "Fix hardcontact maxiter: expected an integer, got '{}'", values[0]);
+    compat::error_all(lmp->error, FLERR, "Fix hardcontact maxiter: expected an integer, got '{}'",
+                      values[0]);
   const bigint maxiter = utils::bnumeric(FLERR, values[0], false, lmp);
   if (maxiter < 1 || maxiter > MAXSMALLINT)
-    lmp->error->all(FLERR, "Fix hardcontact maxiter must be at least 1 and at most {}, got {}",
-                    MAXSMALLINT, values[0]);
+    compat::error_all(lmp->error, FLERR,
+                      "Fix hardcontact maxiter must be at least 1 and at most {}, got {}",
+                      MAXSMALLINT, values[0]);
   o.settings.maxiter = static_cast<int>(maxiter);
 }
 
@@ -76,15 +84,18 @@ void parse_rho(LAMMPS *lmp, char **values, int, FixOptions &o)
 {
   o.settings.rho = number(lmp, "rho", values[0]);
   if (o.settings.rho <= 0.0)
-    lmp->error->all(FLERR, "Fix hardcontact rho must be positive (omit it for the automatic "
-                           "step), got {}", values[0]);
+    compat::error_all(lmp->error, FLERR,
+                      "Fix hardcontact rho must be positive (omit it for the automatic "
+                      "step), got {}",
+                      values[0]);
 }
 
 void parse_warmstart(LAMMPS *lmp, char **values, int, FixOptions &o)
 {
   const std::string value = values[0];
   if (value != "yes" && value != "no")
-    lmp->error->all(FLERR, "Fix hardcontact warmstart must be yes or no, got '{}'", value);
+    compat::error_all(lmp->error, FLERR, "Fix hardcontact warmstart must be yes or no, got '{}'",
+                      value);
   o.warmstart = value == "yes";
 }
 
@@ -98,21 +109,24 @@ void parse_wall(LAMMPS *lmp, char **values, int n, FixOptions &o)
     return;
   }
   if (n != 3)
-    lmp->error->all(FLERR, "Fix hardcontact wall needs 3 value(s) after it (wall {} lo hi)",
-                    plane);
+    compat::error_all(lmp->error, FLERR,
+                      "Fix hardcontact wall needs 3 value(s) after it (wall {} lo hi)", plane);
   int dim = -1;
   if (plane == "xplane") dim = 0;
   else if (plane == "yplane") dim = 1;
   else if (plane == "zplane") dim = 2;
   else
-    lmp->error->all(FLERR, "Fix hardcontact wall '{}' is unknown: use xplane, yplane, zplane or "
-                           "region", plane);
+    compat::error_all(lmp->error, FLERR,
+                      "Fix hardcontact wall '{}' is unknown: use xplane, yplane, zplane or "
+                      "region",
+                      plane);
   if (dim == 2 && lmp->domain->dimension == 2)
     lmp->error->all(FLERR, "Fix hardcontact wall zplane is not allowed in a 2d simulation");
   const bool has_lo = strcmp(values[1], "NULL") != 0;
   const bool has_hi = strcmp(values[2], "NULL") != 0;
   if (!has_lo && !has_hi)
-    lmp->error->all(FLERR, "Fix hardcontact wall {}: lo and hi cannot both be NULL", plane);
+    compat::error_all(lmp->error, FLERR, "Fix hardcontact wall {}: lo and hi cannot both be NULL",
+                      plane);
   // a position is a number, or v_name: an equal-style variable, a moving wall
   auto variable = [](const char *word) { return strncmp(word, "v_", 2) == 0 ? word + 2 : ""; };
   const std::string var_lo = has_lo ? variable(values[1]) : "";
@@ -121,8 +135,8 @@ void parse_wall(LAMMPS *lmp, char **values, int n, FixOptions &o)
   if (has_lo && var_lo.empty()) lo = number(lmp, "wall lo", values[1]);
   if (has_hi && var_hi.empty()) hi = number(lmp, "wall hi", values[2]);
   if (has_lo && has_hi && var_lo.empty() && var_hi.empty() && lo >= hi)
-    lmp->error->all(FLERR, "Fix hardcontact wall {}: lo ({}) must be below hi ({})", plane, lo,
-                    hi);
+    compat::error_all(lmp->error, FLERR, "Fix hardcontact wall {}: lo ({}) must be below hi ({})",
+                      plane, lo, hi);
   if (has_lo) {
     o.walls.push_back({dim, true, lo});
     o.wall_variables.push_back(var_lo);
@@ -155,8 +169,10 @@ void parse_restitution(LAMMPS *lmp, char **values, int n, FixOptions &o)
 {
   const double e = number(lmp, "restitution", values[0]);
   if (e < 0.0 || e > 1.0)
-    lmp->error->all(FLERR, "Fix hardcontact restitution must be in [0, 1] (0: inelastic, the "
-                           "paper's scheme; 1: elastic), got {}", values[0]);
+    compat::error_all(lmp->error, FLERR,
+                      "Fix hardcontact restitution must be in [0, 1] (0: inelastic, the "
+                      "paper's scheme; 1: elastic), got {}",
+                      values[0]);
   set_pair_values(lmp, values, n, e, o.restitution);
 }
 
@@ -164,8 +180,10 @@ void parse_cohesion(LAMMPS *lmp, char **values, int n, FixOptions &o)
 {
   const double f = number(lmp, "cohesion", values[0]);
   if (f < 0.0)
-    lmp->error->all(FLERR, "Fix hardcontact cohesion must be a force >= 0 (the pull a touching "
-                           "contact holds before it opens), got {}", values[0]);
+    compat::error_all(lmp->error, FLERR,
+                      "Fix hardcontact cohesion must be a force >= 0 (the pull a touching "
+                      "contact holds before it opens), got {}",
+                      values[0]);
   set_pair_values(lmp, values, n, f, o.cohesion);
 }
 
@@ -200,8 +218,10 @@ void parse_bounce(LAMMPS *lmp, char **values, int, FixOptions &o)
 {
   o.bounce_vmin = number(lmp, "bounce", values[0]);
   if (o.bounce_vmin < 0.0)
-    lmp->error->all(FLERR, "Fix hardcontact bounce must be a speed >= 0 (contacts closing "
-                           "slower stay inelastic), got {}", values[0]);
+    compat::error_all(lmp->error, FLERR,
+                      "Fix hardcontact bounce must be a speed >= 0 (contacts closing "
+                      "slower stay inelastic), got {}",
+                      values[0]);
 }
 
 const Keyword keywords[] = {
@@ -256,17 +276,17 @@ FixOptions parse_keywords(LAMMPS *lmp, int narg, char **arg, int first)
     for (const Keyword &k : keywords)
       if (strcmp(arg[iarg], k.name) == 0) found = &k;
     if (!found)
-      lmp->error->all(FLERR, "Fix hardcontact keyword '{}' is unknown: use {}", arg[iarg],
-                      keyword_list());
+      compat::error_all(lmp->error, FLERR, "Fix hardcontact keyword '{}' is unknown: use {}",
+                        arg[iarg], keyword_list());
     if (iarg + found->nvalues >= narg)
-      lmp->error->all(FLERR, "Fix hardcontact {} needs {} value(s) after it ({})", found->name,
-                      found->nvalues, found->doc);
+      compat::error_all(lmp->error, FLERR, "Fix hardcontact {} needs {} value(s) after it ({})",
+                        found->name, found->nvalues, found->doc);
     int n = found->nvalues;
     // optional values: present when the next word is not a keyword name
     if (found->optional > 0 && iarg + n + 1 < narg && !is_keyword(arg[iarg + n + 1])) {
       if (iarg + n + found->optional >= narg)
-        lmp->error->all(FLERR, "Fix hardcontact {} takes {} or {} value(s) after it",
-                        found->name, found->nvalues, found->nvalues + found->optional);
+        compat::error_all(lmp->error, FLERR, "Fix hardcontact {} takes {} or {} value(s) after it",
+                          found->name, found->nvalues, found->nvalues + found->optional);
       n += found->optional;
     }
     found->parse(lmp, arg + iarg + 1, n, options);

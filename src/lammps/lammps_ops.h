@@ -33,8 +33,9 @@ class LammpsOps : public DistributedOps {
   {
     // LAMMPS sized its buffers for comm_forward = kMaxPerBody doubles per atom
     if (per_body > kMaxPerBody)
-      error_->one(FLERR, "Fix hardcontact: forward of {} values per atom exceeds comm_forward {}",
-                  per_body, kMaxPerBody);
+      compat::error_one(error_, FLERR,
+                        "Fix hardcontact: forward of {} values per atom exceeds comm_forward {}",
+                        per_body, kMaxPerBody);
     data_ = data;
     per_body_ = per_body;
     compat::forward_comm(comm_, fix_);

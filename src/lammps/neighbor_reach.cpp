@@ -33,15 +33,14 @@ void NeighborReach::init(Fix *fix, int instance_me)
   cutoff_ = 2.0 * rmax_ + neighbor->skin;
   comm->cutghostuser =
       MAX(user_cutghost_, compat::ghost_cutoff_for_request(cutoff_, neighbor->skin));
-  if (force->pair == nullptr && (!neighbor->binsizeflag || binsize_set_here_)) {
+  if (force->pair == nullptr && (compat::user_bin_size(neighbor) == 0.0 || binsize_set_here_)) {
     // Without a pair style LAMMPS bins with the whole box (master cutoff 0): O(N^2) lists,
     // and it stops sorting atoms (memory locality). Bin as a pair style of this reach would.
-    neighbor->binsizeflag = 1;
-    neighbor->binsize_user = 0.5 * cutoff_;
+    compat::set_user_bin_size(neighbor, 0.5 * cutoff_);
     binsize_set_here_ = true;
   }
-  if (force->pair == nullptr && (atom->userbinsize == 0.0 || sortbin_set_here_)) {
-    atom->userbinsize = 0.5 * cutoff_;
+  if (force->pair == nullptr && (compat::sort_bin_size(atom) == 0.0 || sortbin_set_here_)) {
+    compat::sort_bin_size(atom) = 0.5 * cutoff_;
     sortbin_set_here_ = true;
   }
   compat::request_size_list(neighbor, fix, instance_me, cutoff_);
@@ -57,11 +56,12 @@ void NeighborReach::check_all_radii() const
 void NeighborReach::check_radius(double rmax_now) const
 {
   if (rmax_now <= rmax_) return;
-  error->all(FLERR, "Fix hardcontact: a sphere of radius {} appeared during the run, larger than "
+  compat::error_all(error, FLERR,
+                    "Fix hardcontact: a sphere of radius {} appeared during the run, larger than "
                     "the {} the neighbor list and ghosts were sized for; its contacts could be "
                     "missed: use 'comm_modify cutoff {:.6g}' (room for radius {:.6g} with this "
-                    "skin) before the run", rmax_now, rmax_,
-             2.0 * rmax_now + neighbor->skin, rmax_now);
+                    "skin) before the run",
+                    rmax_now, rmax_, 2.0 * rmax_now + neighbor->skin, rmax_now);
 }
 
 }    // namespace hardcontact

@@ -19,6 +19,8 @@ class NeighborReach : protected LAMMPS_NS::Pointers {
   void check_all_radii() const;
   // Stops with an error if rmax_now (over all processes) exceeds the radius sized for.
   void check_radius(double rmax_now) const;
+  // 2 r_max + skin, set by init
+  double cutoff() const { return cutoff_; }
 
  private:
   double largest_radius() const;

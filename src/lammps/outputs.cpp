@@ -1,6 +1,7 @@
 #include "outputs.h"
 
 #include "sources/contact_source.h"
+#include "lammps_compat.h"
 
 #include "../core/dual_operator.h"
 
@@ -50,11 +51,12 @@ void Outputs::start_of_run(const ContactProblem &p, const WallGaps &walls,
   diag_[RHO] = diag_[ROUNDS] = diag_[CLEARING_WORK] = diag_[FRICTION_WORK] = 0.0;
   diag_[MAXITER_HITS] = static_cast<double>(maxiter_hits_);
   if (diag_[MAX_OVERLAP_RELATIVE] > tol && comm->me == 0)
-    error->warning(FLERR, "Fix hardcontact: the run starts with overlapping spheres (largest "
-                          "overlap {:.6g}, {:.3g} of the contact size); each step clears at most "
-                          "h x the velocity the forces give in one step, plus 2 tol x its row "
-                          "scale, so that no energy explodes (see the doc page)",
-                   diag_[MAX_OVERLAP], diag_[MAX_OVERLAP_RELATIVE]);
+    compat::warning(error, FLERR,
+                    "Fix hardcontact: the run starts with overlapping spheres (largest "
+                    "overlap {:.6g}, {:.3g} of the contact size); each step clears at most "
+                    "h x the velocity the forces give in one step, plus 2 tol x its row "
+                    "scale, so that no energy explodes (see the doc page)",
+                    diag_[MAX_OVERLAP], diag_[MAX_OVERLAP_RELATIVE]);
   fix_->size_local_rows = 0;
   for (int i = 0; i < atom->nlocal; ++i) clear_per_atom(i);
 }
@@ -74,12 +76,13 @@ void Outputs::record_solve(const StepResult &r, const SolverSettings &settings)
     ++maxiter_hits_;
     ++maxiter_hits_run_;
     if (maxiter_hits_run_ == 1 && comm->me == 0)
-      error->warning(FLERR, "Fix hardcontact: the solve of step {} stopped unconverged after {} "
-                            "iterations (maxiter {}) with residual {:.3g} > tol {:.3g}; overlaps "
-                            "up to that size may remain. Raise maxiter or tol (counted in "
-                            "f_{}[{}]; reported once per run)",
-                     update->ntimestep, r.report.iterations, settings.maxiter, r.report.residual,
-                     settings.tol, fix_->id, MAXITER_HITS + 1);
+      compat::warning(error, FLERR,
+                      "Fix hardcontact: the solve of step {} stopped unconverged after {} "
+                      "iterations (maxiter {}) with residual {:.3g} > tol {:.3g}; overlaps "
+                      "up to that size may remain. Raise maxiter or tol (counted in "
+                      "f_{}[{}]; reported once per run)",
+                      update->ntimestep, r.report.iterations, settings.maxiter, r.report.residual,
+                      settings.tol, fix_->id, MAXITER_HITS + 1);
   }
   diag_[CLEARING_WORK] = r.clearing_work;
   diag_[ITERATIONS] = r.iterations;
@@ -92,9 +95,10 @@ void Outputs::record_solve(const StepResult &r, const SolverSettings &settings)
 void Outputs::end_of_run(const SolverSettings &settings)
 {
   if (maxiter_hits_run_ > 0 && comm->me == 0)
-    error->warning(FLERR, "Fix hardcontact: {} solve(s) of this run stopped unconverged "
-                          "(maxiter {})",
-                   maxiter_hits_run_, settings.maxiter);
+    compat::warning(error, FLERR,
+                    "Fix hardcontact: {} solve(s) of this run stopped unconverged "
+                    "(maxiter {})",
+                    maxiter_hits_run_, settings.maxiter);
   maxiter_hits_run_ = 0;
 }
 

@@ -6,6 +6,7 @@
 
 #include "sources/row_sink.h"
 #include "lammps_ops.h"
+#include "lammps_compat.h"
 #include "../core/cohesion.h"
 #include "../core/targets.h"
 
@@ -168,15 +169,20 @@ void ContactStep::check_bodies(const std::vector<PlaneWall> &walls) const
   tagint all[3];
   MPI_Allreduce(bad, all, 3, MPI_LMP_TAGINT, MPI_MAX, world);
   if (all[0])
-    error->all(FLERR, "Fix hardcontact: atom {} has a non-finite position, velocity, radius or "
-                      "mass: fix the data file or the commands that set it", all[0]);
+    compat::error_all(error, FLERR,
+                      "Fix hardcontact: atom {} has a non-finite position, velocity, radius or "
+                      "mass: fix the data file or the commands that set it",
+                      all[0]);
   if (all[1])
-    error->all(FLERR, "Fix hardcontact: atom {} has radius or mass <= 0: every atom of the "
+    compat::error_all(error, FLERR,
+                      "Fix hardcontact: atom {} has radius or mass <= 0: every atom of the "
                       "group needs a positive diameter and density (set diameter / set density)",
-               all[1]);
+                      all[1]);
   if (all[2])
-    error->all(FLERR, "Fix hardcontact: the centre of atom {} is behind a wall: move the wall "
-                      "or the atom", all[2]);
+    compat::error_all(error, FLERR,
+                      "Fix hardcontact: the centre of atom {} is behind a wall: move the wall "
+                      "or the atom",
+                      all[2]);
 }
 
 // Eq. 14: u_free = u^n + h M^-1 f^{n+1}, f evaluated at q^n (LAMMPS's forces of this state).
@@ -213,8 +219,10 @@ Bodies ContactStep::build_bodies(bool needs_owner_map, const StepEffects &effect
   tagint bad_all;
   MPI_Allreduce(&bad, &bad_all, 1, MPI_LMP_TAGINT, MPI_MAX, world);
   if (bad_all)
-    error->all(FLERR, "Fix hardcontact: atom {} has a non-finite velocity or force at step {}: "
-                      "check the forces acting on it", bad_all, update->ntimestep);
+    compat::error_all(error, FLERR,
+                      "Fix hardcontact: atom {} has a non-finite velocity or force at step {}: "
+                      "check the forces acting on it",
+                      bad_all, update->ntimestep);
   double global[2];
   MPI_Allreduce(local, global, 2, MPI_DOUBLE, MPI_MAX, world);
   reach_.check_radius(global[1]);

@@ -2,6 +2,8 @@
 
 #include "row_sink.h"
 
+#include "../lammps_compat.h"
+
 #include "atom.h"
 #include "domain.h"
 #include "error.h"
@@ -49,22 +51,25 @@ void PlaneWallSource::init_positions()
   any_moving_ = false;
   for (int w = 0; w < nw; ++w) {
     if (variables_[w].empty()) continue;
-    const int ivar = lmp_->input->variable->find(variables_[w].c_str());
+    const int ivar = compat::find_variable(lmp_->input->variable, variables_[w]);
     if (ivar < 0)
-      lmp_->error->all(FLERR, "Fix hardcontact wall {}: variable {} does not exist: define it "
-                              "with 'variable {} equal ...' before the run",
-                       names[walls_[w].dim], variables_[w], variables_[w]);
+      compat::error_all(lmp_->error, FLERR,
+                        "Fix hardcontact wall {}: variable {} does not exist: define it "
+                        "with 'variable {} equal ...' before the run",
+                        names[walls_[w].dim], variables_[w], variables_[w]);
     if (!lmp_->input->variable->equalstyle(ivar))
-      lmp_->error->all(FLERR, "Fix hardcontact wall {}: variable {} is not equal-style: a wall "
-                              "position is one number ('variable {} equal ...')",
-                       names[walls_[w].dim], variables_[w], variables_[w]);
+      compat::error_all(lmp_->error, FLERR,
+                        "Fix hardcontact wall {}: variable {} is not equal-style: a wall "
+                        "position is one number ('variable {} equal ...')",
+                        names[walls_[w].dim], variables_[w], variables_[w]);
     var_index_[w] = ivar;
     any_moving_ = true;
     walls_[w].coord = evaluate(w);
     walls_[w].velocity = 0.0;
     if (!std::isfinite(walls_[w].coord))
-      lmp_->error->all(FLERR, "Fix hardcontact wall {}: variable {} is not a finite number",
-                       names[walls_[w].dim], variables_[w]);
+      compat::error_all(lmp_->error, FLERR,
+                        "Fix hardcontact wall {}: variable {} is not a finite number",
+                        names[walls_[w].dim], variables_[w]);
   }
 }
 
@@ -76,9 +81,10 @@ const std::vector<Vec3> *PlaneWallSource::advance(double h)
     if (var_index_[w] < 0) continue;
     const double next = evaluate(w);
     if (!std::isfinite(next))
-      lmp_->error->all(FLERR, "Fix hardcontact: the position of moving wall {} is not a finite "
-                              "number at step {}: check variable {}",
-                       w + 1, lmp_->update->ntimestep, variables_[w]);
+      compat::error_all(lmp_->error, FLERR,
+                        "Fix hardcontact: the position of moving wall {} is not a finite "
+                        "number at step {}: check variable {}",
+                        w + 1, lmp_->update->ntimestep, variables_[w]);
     walls_[w].velocity = (next - walls_[w].coord) / h;
     velocity_[w] = walls_[w].velocity_vector();
   }
@@ -97,16 +103,19 @@ void PlaneWallSource::check_in_box() const
   Error *error = lmp_->error;
   for (const auto &w : walls_) {
     if (domain->periodicity[w.dim])
-      error->all(FLERR, "Fix hardcontact wall {} needs a non-periodic boundary in that "
-                        "direction: change the boundary command", names[w.dim]);
+      compat::error_all(error, FLERR,
+                        "Fix hardcontact wall {} needs a non-periodic boundary in that "
+                        "direction: change the boundary command",
+                        names[w.dim]);
     // A shrink-wrapped box follows the atoms: only fixed boundaries bound the wall.
     const bool fixed_lo = domain->boundary[w.dim][0] == 1;
     const bool fixed_hi = domain->boundary[w.dim][1] == 1;
     if ((fixed_lo && w.coord < domain->boxlo[w.dim]) ||
         (fixed_hi && w.coord > domain->boxhi[w.dim]))
-      error->all(FLERR, "Fix hardcontact wall {} at {} lies outside the box ({} to {}): move "
-                        "it inside", names[w.dim], w.coord, domain->boxlo[w.dim],
-                 domain->boxhi[w.dim]);
+      compat::error_all(error, FLERR,
+                        "Fix hardcontact wall {} at {} lies outside the box ({} to {}): move "
+                        "it inside",
+                        names[w.dim], w.coord, domain->boxlo[w.dim], domain->boxhi[w.dim]);
   }
 }
 

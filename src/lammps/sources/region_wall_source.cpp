@@ -21,15 +21,26 @@ void RegionWallSource::init(int first_wall)
 {
   first_wall_ = first_wall;
   regions_.clear();
+  if (!ids_.empty() && !compat::kRegionFacesNumbered)
+    compat::error_all(lmp_->error, FLERR,
+                      "Fix hardcontact wall region {}: region walls are not available on this "
+                      "host (LIGGGHTS 3.8 regions do not number the face a contact lies on, "
+                      "which the fix needs to follow each face from step to step): use plane "
+                      "walls (wall xplane/yplane/zplane)",
+                      ids_.front());
   for (const std::string &id : ids_) {
     Region *region = compat::find_region(lmp_->domain, id);
     if (region == nullptr)
-      lmp_->error->all(FLERR, "Fix hardcontact wall region {}: no region with that ID: define it "
-                              "with the region command before the fix", id);
+      compat::error_all(lmp_->error, FLERR,
+                        "Fix hardcontact wall region {}: no region with that ID: define it "
+                        "with the region command before the fix",
+                        id);
     if (region->dynamic_check())
-      lmp_->error->all(FLERR, "Fix hardcontact wall region {}: moving or variable-shape regions "
-                              "are not supported yet: use a static region, or a moving plane "
-                              "wall (wall zplane v_name ...)", id);
+      compat::error_all(lmp_->error, FLERR,
+                        "Fix hardcontact wall region {}: moving or variable-shape regions "
+                        "are not supported yet: use a static region, or a moving plane "
+                        "wall (wall zplane v_name ...)",
+                        id);
     regions_.push_back(region);
   }
 }
@@ -51,14 +62,16 @@ void RegionWallSource::visit(const Bodies &, RowSink &sink) const
       const int n = region->surface(x[i][0], x[i][1], x[i][2], radius[i] + skin);
       for (int m = 0; m < n; ++m) {
         const auto &ct = region->contact[m];
-        if (ct.iwall >= kFacesPerRegion)
-          lmp_->error->one(FLERR, "Fix hardcontact wall region {}: face {} beyond the {} faces a "
-                                  "region may have here: split the region into several wall "
-                                  "region keywords", ids_[k], ct.iwall, kFacesPerRegion);
+        if (compat::region_face(ct) >= kFacesPerRegion)
+          compat::error_one(lmp_->error, FLERR,
+                            "Fix hardcontact wall region {}: face {} beyond the {} faces a "
+                            "region may have here: split the region into several wall "
+                            "region keywords",
+                            ids_[k], compat::region_face(ct), kFacesPerRegion);
         if (!(ct.r > 0.0)) continue;    // centre on the surface: no direction (check_sides)
         // delx.. points from the surface to the centre: the row's normal is the opposite
         const Vec3 normal = -Vec3(ct.delx, ct.dely, ct.delz) / ct.r;
-        const int w = first_wall_ + kFacesPerRegion * k + ct.iwall;
+        const int w = first_wall_ + kFacesPerRegion * k + compat::region_face(ct);
         sink.offer(i, wall_body(w), normal, ct.r - radius[i], radius[i]);
       }
     }
@@ -82,9 +95,11 @@ void RegionWallSource::check_sides() const
   int which_all;
   MPI_Allreduce(&which, &which_all, 1, MPI_INT, MPI_MAX, lmp_->world);
   if (all)
-    lmp_->error->all(FLERR, "Fix hardcontact: the centre of atom {} is on the wrong side of wall "
-                            "region {} (outside a 'side in' region, inside a 'side out' one): "
-                            "move the atom or change the region", all, ids_[which_all]);
+    compat::error_all(lmp_->error, FLERR,
+                      "Fix hardcontact: the centre of atom {} is on the wrong side of wall "
+                      "region {} (outside a 'side in' region, inside a 'side out' one): "
+                      "move the atom or change the region",
+                      all, ids_[which_all]);
 }
 
 double RegionWallSource::gap(int w, const Vec3 &x, double radius) const
@@ -96,7 +111,7 @@ double RegionWallSource::gap(int w, const Vec3 &x, double radius) const
   if (!region->match(x[0], x[1], x[2])) return -radius;
   const int n = region->surface(x[0], x[1], x[2], radius + lmp_->neighbor->skin);
   for (int m = 0; m < n; ++m)
-    if (region->contact[m].iwall == iwall) return region->contact[m].r - radius;
+    if (compat::region_face(region->contact[m]) == iwall) return region->contact[m].r - radius;
   return std::numeric_limits<double>::infinity();    // that face is farther than the skin
 }
 
