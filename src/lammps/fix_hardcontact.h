@@ -54,6 +54,8 @@ class FixHardContact : public Fix {
   // how far the neighbour list and ghosts reach (2 r_max + skin): the LIGGGHTS fix sizes the
   // stencil with it (src/liggghts/fix_hardcontact_liggghts.h)
   double reach_cutoff() const { return reach_.cutoff(); }
+  // values per atom of the forward communication in progress (LIGGGHTS's pack_comm returns it)
+  int forward_values_per_atom() const { return ops_.per_body(); }
 
  private:
   hardcontact::FixOptions options_;    // the keywords (keywords.h)

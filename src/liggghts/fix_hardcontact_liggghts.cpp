@@ -53,9 +53,12 @@ void FixHardContactLiggghts::pre_force(int)
   if (neighbor->ago == 0) post_neighbor();
 }
 
+// LIGGGHTS's Comm sends n x (what pack_comm returns) values: the count per atom, where
+// LAMMPS's pack_forward_comm returns the total.
 int FixHardContactLiggghts::pack_comm(int n, int *list, double *buf, int pbc_flag, int *pbc)
 {
-  return pack_forward_comm(n, list, buf, pbc_flag, pbc);
+  pack_forward_comm(n, list, buf, pbc_flag, pbc);
+  return forward_values_per_atom();
 }
 
 void FixHardContactLiggghts::unpack_comm(int n, int first, double *buf)

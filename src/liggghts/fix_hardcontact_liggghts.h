@@ -1,7 +1,8 @@
 // fix hardcontact on LIGGGHTS 3.8: FixHardContact (src/lammps/) plus the callbacks LIGGGHTS
 // offers instead of LAMMPS's. Its Fix has no post_neighbor: post_neighbor() runs from pre_force
 // on the steps whose lists were just built (nothing happens in between: Verlet builds the lists,
-// clears forces, then calls pre_force). Forward communication is pack_comm/unpack_comm there.
+// clears forces, then calls pre_force). Forward communication is pack_comm/unpack_comm there
+// (pack_comm returns the values per atom, not their total).
 // Its neighbour requests carry no cutoff: the stencil is widened to the fix's reach before the
 // bins are set up, every run (Neighbor::init resets it).
 #pragma once

@@ -28,7 +28,7 @@ from pathlib import Path
 import numpy as np
 
 __all__ = [
-    "Host", "RunResult", "LammpsRunError", "run_deck", "parse_thermo", "read_dump", "read_dump_local",
+    "Host", "liggghts_deck", "RunResult", "LammpsRunError", "run_deck", "parse_thermo", "read_dump", "read_dump_local",
     "DumpFrame", "test_args", "fresh_workdir", "check", "main",
 ]
 
@@ -43,8 +43,10 @@ class Host(str):
 
     name    "launcher": build/lmp_hardcontact (Debian's LAMMPS 29 Sep 2021, fix registered);
             "modern":   a modern lmp with the PLUGIN package; every deck is run with
-                        `plugin load <plugin>` as its first line, as a user's deck would be.
-    plugin  path of hardcontactplugin.so for "modern", None for "launcher"
+                        `plugin load <plugin>` as its first line, as a user's deck would be;
+            "liggghts": build/liggghts_hardcontact (Debian's LIGGGHTS 3.8, fix registered);
+                        decks are rewritten where LIGGGHTS needs other commands (liggghts_deck)
+    plugin  path of hardcontactplugin.so for "modern", None otherwise
     """
 
     def __new__(cls, exe, name="launcher", plugin=None):
@@ -53,11 +55,49 @@ class Host(str):
         self.plugin = str(Path(plugin).resolve()) if plugin else None
         return self
 
+    @property
+    def rewrites(self):
+        """True when deck_text may change a deck (it must then run from a copy)."""
+        return self.plugin is not None or self.name == "liggghts"
+
     def deck_text(self, text):
         """The deck as this host runs it."""
+        if self.name == "liggghts":
+            return liggghts_deck(text)
         if not self.plugin:
             return text
         return "plugin load %s\n%s" % (self.plugin, text)
+
+
+# dump custom columns LAMMPS writes as integers (the rest as floating point)
+_INT_DUMP_COLUMNS = {"id", "type", "mol", "proc", "procp1", "ix", "iy", "iz", "index"}
+
+
+def liggghts_deck(text):
+    """A LAMMPS deck of the tests as LIGGGHTS 3.8 runs it. Two commands differ, nothing else:
+      * `newton off` first: LIGGGHTS's granular neighbour lists hold a pair across processors
+        on both only with newton off, which the fix requires there (as pair gran with history
+        does; LIGGGHTS decks set it by convention);
+      * `dump_modify ID format float F`: LIGGGHTS (LAMMPS of 2013) takes one format for the
+        whole line, built here from the dump's columns (integers %d, the rest F).
+    Everything else (atom_style sphere, read_data, computes, restarts) LIGGGHTS reads as LAMMPS
+    does."""
+    columns = {}
+    out = ["newton          off    # added for LIGGGHTS (lammps_run.liggghts_deck)"]
+    for line in text.splitlines():
+        words = line.split()
+        if len(words) >= 7 and words[0] == "dump" and words[3] in ("custom", "local"):
+            # dump ID group style N file columns...
+            columns[words[1]] = [w for w in words[6:] if not w.startswith("#")]
+        if len(words) >= 5 and words[0] == "dump_modify" and "format" in words:
+            k = words.index("format")
+            if k + 2 < len(words) and words[k + 1] == "float" and words[1] in columns:
+                fmt = " ".join("%d" if c in _INT_DUMP_COLUMNS else words[k + 2]
+                               for c in columns[words[1]])
+                words[k:k + 3] = ["format", '"%s"' % fmt]
+                line = " ".join(words)
+        out.append(line)
+    return "\n".join(out) + "\n"
 
 
 class LammpsRunError(RuntimeError):
@@ -150,9 +190,10 @@ def run_deck(lmp, deck, np=1, workdir=".", variables=None, expect_error=False,
     """Run one deck and return a RunResult.
 
     lmp          the LAMMPS executable (build/lmp_hardcontact), or a Host (test_args().lmp):
-                 a Host with a plugin runs the deck with `plugin load <plugin>` prepended
+                 a Host with a plugin runs the deck with `plugin load <plugin>` prepended,
+                 the liggghts Host runs it as liggghts_deck() rewrites it
     deck         the input text, or the path of an input file (run with -in <absolute path>;
-                 on a plugin host, a copy with the plugin line runs in workdir)
+                 on a plugin or liggghts host, its rewritten copy runs in workdir)
     np           number of MPI ranks: 1 = plain exec, > 1 = mpirun --oversubscribe -np N
     workdir      directory the deck runs in (created); relative file names in the deck refer to it
     variables    {name: value} -> -var name value (a list/tuple value gives several words)
@@ -166,10 +207,10 @@ def run_deck(lmp, deck, np=1, workdir=".", variables=None, expect_error=False,
     (workdir / _MARKER).touch()
     for f in files:
         shutil.copy(str(f), str(workdir))
-    plugin_host = getattr(lmp, "plugin", None) is not None
-    if _looks_like_deck_text(deck) or plugin_host:
+    rewriting_host = getattr(lmp, "rewrites", False)
+    if _looks_like_deck_text(deck) or rewriting_host:
         text = deck if _looks_like_deck_text(deck) else Path(deck).read_text()
-        if plugin_host:
+        if rewriting_host:
             text = lmp.deck_text(text)
             if not _looks_like_deck_text(deck):
                 deck_name = Path(deck).name
@@ -200,7 +241,9 @@ def run_deck(lmp, deck, np=1, workdir=".", variables=None, expect_error=False,
 
     t0 = time.monotonic()
     timed_out = False
-    with open(workdir / "stdout.txt", "w+") as out, open(workdir / "stderr.txt", "w+") as err:
+    # errors="replace": LIGGGHTS prints bytes that are not UTF-8 (uninitialised text in a banner)
+    with open(workdir / "stdout.txt", "w+", errors="replace") as out, \
+            open(workdir / "stderr.txt", "w+", errors="replace") as err:
         proc = subprocess.Popen(cmd, cwd=str(workdir), stdin=subprocess.DEVNULL, stdout=out,
                                 stderr=err, env=run_env, start_new_session=True)
         try:
@@ -267,14 +310,22 @@ def _is_int_token(tok):
 def parse_thermo(text):
     """Thermo blocks of a LAMMPS log (or screen output): a list with one dict per run, column
     name -> numpy array. A block starts at the header line printed after 'Per MPI rank memory
-    allocation' (thermo_style one/custom) and ends at 'Loop time' (or at an ERROR / the end of
-    the text for a run that died). Lines inside a block that are not a full row of numbers
-    (warnings, fix output) are skipped."""
+    allocation' (thermo_style one/custom; 'Memory usage per processor' in LIGGGHTS) and ends at
+    'Loop time' (or at an ERROR / the end of the text for a run that died). Lines inside a block
+    that are not a full row of numbers (warnings, fix output) are skipped. LIGGGHTS heads its
+    columns without the f_/c_/v_ prefixes ("hc[7]" for f_hc[7]): they are named after the words
+    of the last echoed `thermo_style custom` line instead, so tests read the same names on
+    every host."""
     blocks = []
     lines = text.splitlines()
     i, n = 0, len(lines)
+    custom = None
     while i < n:
-        if not lines[i].startswith("Per MPI rank memory allocation"):
+        words = lines[i].split()
+        if len(words) > 2 and words[0] == "thermo_style" and words[1] == "custom":
+            custom = [w for w in words[2:] if not w.startswith("#")]
+        if not (lines[i].startswith("Per MPI rank memory allocation") or
+                lines[i].startswith("Memory usage per processor")):
             i += 1
             continue
         i += 1
@@ -285,12 +336,16 @@ def parse_thermo(text):
         names = lines[i].split()
         if not names or any(_is_number(t) for t in names):
             continue
+        if custom and len(custom) == len(names) and \
+                all(c.lower() == m.lower() or c.endswith("_" + m) for c, m in zip(custom, names)):
+            names = [m if c.lower() == m.lower() else c for c, m in zip(custom, names)]
         rows = []
         i += 1
         while i < n:
             line = lines[i]
             if line.startswith("Loop time") or line.startswith("ERROR") or \
-                    line.startswith("Per MPI rank memory allocation"):
+                    line.startswith("Per MPI rank memory allocation") or \
+                    line.startswith("Memory usage per processor"):
                 break
             toks = line.split()
             if len(toks) == len(names) and all(_is_number(t) for t in toks):
@@ -403,9 +458,10 @@ def test_args(description=None, argv=None):
     p.add_argument("--lmp", default=None,
                    help="LAMMPS executable: with fix hardcontact (launcher host, default "
                         "build/lmp_hardcontact) or with the PLUGIN package (modern host)")
-    p.add_argument("--host", choices=("launcher", "modern"), default="launcher",
+    p.add_argument("--host", choices=("launcher", "modern", "liggghts"), default="launcher",
                    help="launcher: the fix is built in; modern: every deck starts with "
-                        "'plugin load <--plugin>'")
+                        "'plugin load <--plugin>'; liggghts: LIGGGHTS with the fix built in "
+                        "(--lmp build/liggghts_hardcontact), decks rewritten where it differs")
     p.add_argument("--plugin", default=None,
                    help="hardcontactplugin.so built against the modern LAMMPS (--host modern)")
     p.add_argument("--np", type=int, default=1, help="MPI ranks (default 1: no mpirun)")
@@ -417,6 +473,8 @@ def test_args(description=None, argv=None):
         if not a.lmp or not a.plugin:
             p.error("--host modern needs --lmp <modern lmp> and --plugin <hardcontactplugin.so>")
         a.lmp = Host(a.lmp, "modern", a.plugin)
+    elif a.host == "liggghts":
+        a.lmp = Host(a.lmp or _REPO / "build" / "liggghts_hardcontact", "liggghts")
     else:
         a.lmp = Host(a.lmp or _REPO / "build" / "lmp_hardcontact", "launcher")
     if a.workdir is None:

@@ -41,19 +41,26 @@ run             {n}
 def sphere_mass(radius, density):
     """Mass LAMMPS gives an atom_style sphere atom from a data file (diameter, density) or
     `set density`: 4/3 pi r^3 rho, also in 2d (what the paper's 6.3 wants: spheres in a
-    plane)."""
+    plane; LIGGGHTS in 2d: see write_sphere_data)."""
     return 4.0 / 3.0 * math.pi * radius ** 3 * density
 
 
-def write_sphere_data(path, box, radius, density, x, v=None, title="hardcontact physics test"):
+def write_sphere_data(path, box, radius, density, x, v=None, title="hardcontact physics test",
+                      host=None, dimension=3):
     """Write a LAMMPS data file for atom_style sphere, atoms numbered 1..N in the given order,
     type 1. box = ((xlo, xhi), (ylo, yhi), (zlo, zhi)); radius, density: per atom (or scalar);
     x: (N, 3) positions; v: (N, 3) velocities (default 0). Floats are written with repr, so
-    the file holds exactly the doubles given."""
+    the file holds exactly the doubles given.
+    host, dimension: the Host that reads the file and the deck's dimension. In a 2d box
+    LIGGGHTS gives a sphere the mass of a disc, pi r^2 rho, where LAMMPS gives 4/3 pi r^3 rho;
+    for LIGGGHTS the file then holds the density 4/3 r rho, so that both hosts simulate the same
+    masses (sphere_mass) and the measured bounds of the tests hold on both."""
     x = np.asarray(x, dtype=float).reshape(-1, 3)
     n = len(x)
     radius = np.broadcast_to(np.asarray(radius, dtype=float), (n,))
     density = np.broadcast_to(np.asarray(density, dtype=float), (n,))
+    if dimension == 2 and getattr(host, "name", None) == "liggghts":
+        density = density * (4.0 / 3.0) * radius
     v = np.zeros((n, 3)) if v is None else np.asarray(v, dtype=float).reshape(n, 3)
     r = repr
     lines = [title, "", "%d atoms" % n, "1 atom types", ""]

@@ -185,7 +185,8 @@ def test():
     case_args, rest = pre.parse_known_args()
     args = lr.test_args(__doc__, rest)
     x0, r, v0, box = wall_setup() if case_args.case == "wall" else free_setup()
-    pc.write_sphere_data(args.workdir + "/data.cluster", box, r, 1000.0, x0, v0)
+    pc.write_sphere_data(args.workdir + "/data.cluster", box, r, 1000.0, x0, v0,
+                         host=args.lmp, dimension=2)
     res = lr.run_deck(args.lmp, deck(case_args.case), args.np, args.workdir, timeout=args.timeout)
     print("run: %.1f s on %d rank(s)" % (res.seconds, args.np))
     (check_wall if case_args.case == "wall" else check_free)(args, res, x0, r, v0)

@@ -43,10 +43,11 @@ WARM_FACTOR = 20.0
 RANKS = (1, 2, 4)
 
 
-def state_file(frame, path, box):
+def state_file(frame, path, box, host):
     c = frame.columns
     # radius as LAMMPS holds it, density as the deck wrote it: the masses come out identical
-    pc.write_sphere_data(path, box, c["radius"], 1000.0, pc.positions(frame), pc.velocities(frame))
+    pc.write_sphere_data(path, box, c["radius"], 1000.0, pc.positions(frame), pc.velocities(frame),
+                         host=host, dimension=2)
 
 
 def compare(label, fa, fb, pos_tol, vel_tol):
@@ -70,7 +71,8 @@ def test():
     for np_ in ((1,) + ((2, 4) if opts.full else ())):
         wd = "%s/full_np%d" % (args.workdir, np_)
         lr.fresh_workdir(wd)
-        pc.write_sphere_data(wd + "/data.cluster", box, r, 1000.0, x0, v0)
+        pc.write_sphere_data(wd + "/data.cluster", box, r, 1000.0, x0, v0, host=args.lmp,
+                             dimension=2)
         res = lr.run_deck(args.lmp, tc.deck("wall"), np_, wd, timeout=args.timeout)
         print("full run, %d rank(s): %.1f s" % (np_, res.seconds))
         if np_ > 1:
@@ -82,7 +84,7 @@ def test():
         for np_ in RANKS:
             wd = "%s/step%d_np%d" % (args.workdir, k, np_)
             lr.fresh_workdir(wd)
-            state_file(full[1][k], wd + "/data.cluster", box)
+            state_file(full[1][k], wd + "/data.cluster", box, args.lmp)
             res = lr.run_deck(args.lmp, tc.deck("wall", n=1), np_, wd, timeout=args.timeout)
             print("one step from step %d, %d rank(s): %.1f s (%s iterations)"
                   % (k, np_, res.seconds, int(res.thermo[0]["f_hc[1]"][-1])))
@@ -102,7 +104,8 @@ def test():
         # the chaos reference: the same serial run with tol 1% larger, an equally valid answer
         wd = "%s/full_np1_tol101" % args.workdir
         lr.fresh_workdir(wd)
-        pc.write_sphere_data(wd + "/data.cluster", box, r, 1000.0, x0, v0)
+        pc.write_sphere_data(wd + "/data.cluster", box, r, 1000.0, x0, v0, host=args.lmp,
+                             dimension=2)
         res = lr.run_deck(args.lmp, tc.deck("wall").replace("tol %s " % tc.TOL, "tol %r " % (1.01 * tc.TOL)),
                           1, wd, timeout=args.timeout)
         lr.check("tol %r " % (1.01 * tc.TOL) in res.log, "reference run with tol %r" % (1.01 * tc.TOL))
