@@ -13,6 +13,7 @@
 #include "domain.h"
 #include "error.h"
 #include "fix.h"
+#include "modify.h"
 #include "region.h"
 #include "neigh_request.h"
 #include "neighbor.h"
@@ -154,6 +155,13 @@ inline void reach_stencil(LAMMPS_NS::Neighbor *neighbor, double cutoff)
 }
 #endif
 
+// The command that sets the ghost cutoff, as the fix's advice names it.
+#if HARDCONTACT_LIGGGHTS
+constexpr const char *kGhostCutoffCommand = "communicate single cutoff";
+#else
+constexpr const char *kGhostCutoffCommand = "comm_modify cutoff";
+#endif
+
 // The bin size the user set with neigh_modify binsize (0: none), and setting it. (LIGGGHTS
 // keeps these members, and Atom's sort bin below, private: liggghts_members.h.)
 inline double user_bin_size(LAMMPS_NS::Neighbor *neighbor)
@@ -235,6 +243,18 @@ inline void set_exchange_size(LAMMPS_NS::Fix *fix, LAMMPS_NS::Comm *comm, int pe
 }
 
 // ------------------------------------------------------------------------- variables
+// After evaluating a variable outside thermo output: the computes it used must be invoked again
+// on the next step (Modify::addstep_compute). LIGGGHTS's Modify leaves the count of those
+// computes uninitialised until its first init() has listed them (after the fixes' init(), where
+// the fix already evaluates its wall variables): before that there is nothing to tell.
+inline void addstep_compute(LAMMPS_NS::Modify *modify, LAMMPS_NS::bigint step)
+{
+#if HARDCONTACT_LIGGGHTS
+  if (liggghts::compute_time_list(modify) == nullptr) return;
+#endif
+  modify->addstep_compute(step);
+}
+
 // The index of the variable with this name, or -1 (LIGGGHTS's Variable::find takes a char *).
 inline int find_variable(LAMMPS_NS::Variable *variable, const std::string &name)
 {

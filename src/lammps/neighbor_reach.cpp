@@ -26,7 +26,7 @@ double NeighborReach::largest_radius() const
 void NeighborReach::init(Fix *fix, int instance_me)
 {
   rmax_ = largest_radius();
-  // A ghost cutoff set by the user (comm_modify cutoff) makes room for larger spheres that
+  // A ghost cutoff set by the user (comm_modify / LIGGGHTS communicate cutoff) makes room for larger spheres that
   // appear later (fix pour into an empty box).
   if (user_cutghost_ < 0.0) user_cutghost_ = comm->cutghostuser;
   rmax_ = MAX(rmax_, 0.5 * (user_cutghost_ - neighbor->skin));
@@ -59,9 +59,10 @@ void NeighborReach::check_radius(double rmax_now) const
   compat::error_all(error, FLERR,
                     "Fix hardcontact: a sphere of radius {} appeared during the run, larger than "
                     "the {} the neighbor list and ghosts were sized for; its contacts could be "
-                    "missed: use 'comm_modify cutoff {:.6g}' (room for radius {:.6g} with this "
+                    "missed: use '{} {:.6g}' (room for radius {:.6g} with this "
                     "skin) before the run",
-                    rmax_now, rmax_, 2.0 * rmax_now + neighbor->skin, rmax_now);
+                    rmax_now, rmax_, compat::kGhostCutoffCommand, 2.0 * rmax_now + neighbor->skin,
+                    rmax_now);
 }
 
 }    // namespace hardcontact

@@ -47,6 +47,11 @@ struct UserBinSize {
   friend type member(UserBinSize);
 };
 
+struct ListTimeflag {
+  using type = int *Modify::*;
+  friend type member(ListTimeflag);
+};
+
 }    // namespace
 
 template struct ExposeMember<FixMap, &Modify::fix_map>;
@@ -54,12 +59,14 @@ template struct ExposeMember<CutNeighMaxSq, &Neighbor::cutneighmaxsq>;
 template struct ExposeMember<BinSizeFlag, &Neighbor::binsizeflag>;
 template struct ExposeMember<BinSizeUser, &Neighbor::binsize_user>;
 template struct ExposeMember<UserBinSize, &Atom::userbinsize>;
+template struct ExposeMember<ListTimeflag, &Modify::list_timeflag>;
 
 FixStyles &fix_styles(Modify *modify) { return *(modify->*member(FixMap{})); }
 double &stencil_reach_sq(Neighbor *neighbor) { return neighbor->*member(CutNeighMaxSq{}); }
 int &bin_size_set(Neighbor *neighbor) { return neighbor->*member(BinSizeFlag{}); }
 double &bin_size(Neighbor *neighbor) { return neighbor->*member(BinSizeUser{}); }
 double &sort_bin_size(Atom *atom) { return atom->*member(UserBinSize{}); }
+int *compute_time_list(Modify *modify) { return modify->*member(ListTimeflag{}); }
 
 }    // namespace liggghts
 }    // namespace hardcontact

@@ -313,8 +313,8 @@ def parse_thermo(text):
     allocation' (thermo_style one/custom; 'Memory usage per processor' in LIGGGHTS) and ends at
     'Loop time' (or at an ERROR / the end of the text for a run that died). Lines inside a block
     that are not a full row of numbers (warnings, fix output) are skipped. LIGGGHTS heads its
-    columns without the f_/c_/v_ prefixes ("hc[7]" for f_hc[7]): they are named after the words
-    of the last echoed `thermo_style custom` line instead, so tests read the same names on
+    columns without the f_/c_/v_ prefixes ("hc[7]" for f_hc[7]): those are named after the
+    words of the last echoed `thermo_style custom` line instead, so tests read the same names on
     every host."""
     blocks = []
     lines = text.splitlines()
@@ -336,9 +336,8 @@ def parse_thermo(text):
         names = lines[i].split()
         if not names or any(_is_number(t) for t in names):
             continue
-        if custom and len(custom) == len(names) and \
-                all(c.lower() == m.lower() or c.endswith("_" + m) for c, m in zip(custom, names)):
-            names = [m if c.lower() == m.lower() else c for c, m in zip(custom, names)]
+        if custom and len(custom) == len(names):
+            names = [c if c.endswith("_" + m) else m for c, m in zip(custom, names)]
         rows = []
         i += 1
         while i < n:

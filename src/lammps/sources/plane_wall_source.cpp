@@ -38,7 +38,7 @@ double PlaneWallSource::evaluate(int w) const
 {
   lmp_->modify->clearstep_compute();
   const double x = lmp_->input->variable->compute_equal(var_index_[w]);
-  lmp_->modify->addstep_compute(lmp_->update->ntimestep + 1);
+  compat::addstep_compute(lmp_->modify, lmp_->update->ntimestep + 1);
   return x;
 }
 
