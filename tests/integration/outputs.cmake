@@ -6,11 +6,11 @@
 #                within the solver tolerance; tests/integration/test_restart.py
 foreach(_np 1 2 4)
   hardcontact_deck_test(NAME outputs_np${_np} SCRIPT integration/test_outputs.py NP ${_np}
-                        LABELS outputs TIMEOUT 300)
+                        LABELS outputs TIMEOUT 300 HOSTS launcher modern liggghts)
 endforeach()
 foreach(_np 1 2)
   hardcontact_deck_test(NAME restart_np${_np} SCRIPT integration/test_restart.py NP ${_np}
-                        LABELS restart TIMEOUT 180)
+                        LABELS restart TIMEOUT 180 HOSTS launcher modern liggghts)
 endforeach()
 
 # the fix bugs these scripts once documented are fixed: keep them as regression tests

@@ -1,17 +1,22 @@
 # Physics deck tests: real decks through lmp_hardcontact, asserted against analytic answers of
 # scheme (S) (B. Maury 2006). Each script's docstring says what it checks and why.
 # Label "physics" (+ "integration" from hardcontact_deck_test), "soak" for the long ones.
+# Those with HOSTS ... liggghts run through build/liggghts_hardcontact too (LIGGGHTS 3.8; all
+# but region walls, which LIGGGHTS cannot have: lammps_compat.h).
 
 foreach(_np 1 2 4)
   # two spheres head-on in 3D: momentum-weighted normal velocity, tangential unchanged
   hardcontact_deck_test(NAME phys_head_on_np${_np} SCRIPT integration/test_phys_head_on.py
-                        NP ${_np} LABELS physics TIMEOUT 180)
+                        NP ${_np} LABELS physics TIMEOUT 180
+                        HOSTS launcher modern liggghts)
   # a row of 10 touching spheres struck at one end: all leave with m v / M, exact per step
   hardcontact_deck_test(NAME phys_chain_np${_np} SCRIPT integration/test_phys_chain.py
-                        NP ${_np} LABELS physics TIMEOUT 180)
+                        NP ${_np} LABELS physics TIMEOUT 180
+                        HOSTS launcher modern liggghts)
   # a sphere falling under gravity onto a wall: rests on it, weight carried by the wall
   hardcontact_deck_test(NAME phys_wall_rest_np${_np} SCRIPT integration/test_phys_wall_rest.py
-                        NP ${_np} LABELS physics TIMEOUT 180)
+                        NP ${_np} LABELS physics TIMEOUT 180
+                        HOSTS launcher modern liggghts)
   # the paper's 6.3 cluster (2029 discs, h = 0.1): onto a wall, and two halves colliding;
   # with 4 ranks on 2 cores these take 50-100 s each: soak (phys_cluster_ranks runs 4 ranks)
   if(_np EQUAL 4)
@@ -20,15 +25,18 @@ foreach(_np 1 2 4)
     set(_labels physics)
   endif()
   hardcontact_deck_test(NAME phys_cluster_wall_np${_np} SCRIPT integration/test_phys_cluster.py
-                        NP ${_np} LABELS ${_labels} ARGS --case wall TIMEOUT 900)
+                        NP ${_np} LABELS ${_labels} ARGS --case wall TIMEOUT 900
+                        HOSTS launcher modern liggghts)
   hardcontact_deck_test(NAME phys_cluster_free_np${_np} SCRIPT integration/test_phys_cluster.py
-                        NP ${_np} LABELS ${_labels} ARGS --case free TIMEOUT 900)
+                        NP ${_np} LABELS ${_labels} ARGS --case free TIMEOUT 900
+                        HOSTS launcher modern liggghts)
 endforeach()
 
 # one step of the 6.3 impact from the same states with 1, 2 and 4 ranks: agreement within tol
 # (runs all three rank counts itself)
 hardcontact_deck_test(NAME phys_cluster_ranks SCRIPT integration/test_phys_cluster_ranks.py
-                      NP 4 LABELS physics TIMEOUT 900)
+                      NP 4 LABELS physics TIMEOUT 900
+                      HOSTS launcher modern liggghts)
 # the whole 6.3 impact with 1, 2 and 4 ranks (long under mpirun on 2 cores)
 hardcontact_deck_test(NAME phys_cluster_ranks_full SCRIPT integration/test_phys_cluster_ranks.py
                       NP 4 LABELS physics soak ARGS --full TIMEOUT 2400)
@@ -48,12 +56,16 @@ hardcontact_deck_test(NAME phys_cluster_ranks_full SCRIPT integration/test_phys_
 #               bit-identical to none, a spinning gas: energy never grows, linear and angular
 #               momentum exact, ranks agree
 foreach(_effect restitution moving_wall region_wall cohesion friction)
+  set(_hosts launcher modern liggghts)
+  if(_effect STREQUAL "region_wall")
+    set(_hosts launcher modern)    # LIGGGHTS 3.8 has no region walls (lammps_compat.h)
+  endif()
   foreach(_np 1 2 4)
     hardcontact_deck_test(NAME phys_${_effect}_np${_np} SCRIPT integration/test_phys_${_effect}.py
-                          NP ${_np} LABELS physics TIMEOUT 300)
+                          NP ${_np} LABELS physics TIMEOUT 300 HOSTS ${_hosts})
   endforeach()
 endforeach()
 
 # the neighbor rebuild look-ahead under acceleration: a falling sphere with a skin 9 x its step
 hardcontact_deck_test(NAME phys_skin_lookahead SCRIPT integration/test_phys_skin_lookahead.py
-                      NP 1 LABELS physics TIMEOUT 300)
+                      NP 1 LABELS physics TIMEOUT 300 HOSTS launcher modern liggghts)
