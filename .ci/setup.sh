@@ -3,6 +3,7 @@
 #
 #  1. makes sure a deb-src entry for the distribution exists (needed for the LAMMPS headers),
 #  2. installs the build/test packages that are missing (apt-get update only if needed),
+#     LIGGGHTS 3.8 among them (the LIGGGHTS host),
 #  3. caches the full LAMMPS header set of the INSTALLED liblammps-dev version in
 #     .cache/lammps-headers/<version>/ (Debian's liblammps-dev ships only 34 headers and
 #     lacks e.g. neigh_request.h, lammpsplugin.h and the bundled fmt/ headers).
@@ -13,8 +14,10 @@ set -euo pipefail
 
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 CACHE_DIR="${HARDCONTACT_CACHE_DIR:-$ROOT/.cache}"
+# liggghts + libliggghts-dev: LIGGGHTS 3.8 with its full headers, for build/liggghts_hardcontact
+# (the LIGGGHTS host; CMake builds it when it finds them)
 PACKAGES=(lammps liblammps-dev libeigen3-dev libopenmpi-dev openmpi-bin libgtest-dev cmake g++
-          make python3 python3-numpy python3-matplotlib dpkg-dev xz-utils)
+          make python3 python3-numpy python3-matplotlib dpkg-dev xz-utils liggghts libliggghts-dev)
 SRC_LIST=/etc/apt/sources.list.d/debian-src.sources
 export DEBIAN_FRONTEND=noninteractive
 

@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Set up (packages, LAMMPS headers, a modern LAMMPS), build, and run every test except "soak".
+# Set up (packages with LIGGGHTS, LAMMPS headers, a modern LAMMPS), build, and run every test
+# except "soak".
 #   bash tests/run_all.sh             # all of it
 #   bash tests/run_all.sh -L unit     # extra arguments go to ctest
 # MPI tests carry the ctest PROCESSORS property (min(np, 2)): with -j2 an mpirun test never
