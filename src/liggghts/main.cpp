@@ -3,8 +3,8 @@
 //
 // Behaves like LIGGGHTS's own main(): same command-line flags (-in, -var, -log, -echo, -screen,
 // -help, ...), the same signal handlers (SIGINT/SIGTERM end the run cleanly, SIGUSR1 writes a
-// restart file), same exit codes (LIGGGHTS's errors call exit or MPI_Abort themselves). The one
-// addition: right after the LIGGGHTS instance is created, the fix style is put into its table
+// restart file), same exit codes (LIGGGHTS's errors call exit or MPI_Abort themselves). Stdout
+// is line-buffered (see main). The one addition: right after the LIGGGHTS instance is created, the fix style is put into its table
 // of fix styles (fix_hardcontact_liggghts.cpp says how and why that way).
 #include "fix_hardcontact_liggghts.h"
 #include "launcher_help.h"
@@ -16,6 +16,7 @@
 #include <mpi.h>
 
 #include <csignal>
+#include <cstdio>
 #include <cstring>
 
 using namespace LAMMPS_NS;
@@ -40,6 +41,9 @@ void install_signal_handlers()
 int main(int argc, char **argv)
 {
   install_signal_handlers();
+  // LIGGGHTS's error->one prints to the screen (stdout) and calls MPI_Abort without flushing:
+  // with stdout redirected to a file its message would be lost. Line buffering keeps it.
+  std::setvbuf(stdout, nullptr, _IOLBF, 0);
   MPI_Init(&argc, &argv);
 
   int me = 0;

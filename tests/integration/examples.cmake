@@ -32,3 +32,7 @@ hardcontact_deck_test(NAME example_cluster_impact SCRIPT integration/test_exampl
 
 hardcontact_deck_test(NAME example_bouncing_ball SCRIPT integration/test_example_bouncing_ball.py
                       NP 1 LABELS examples TIMEOUT 120)
+
+# liggghts_settle (LIGGGHTS decks): 468 beads settle, hard contacts and the Hertz twin, as shipped
+hardcontact_deck_test(NAME example_liggghts_settle SCRIPT integration/test_example_liggghts_settle.py
+                      NP 1 LABELS examples TIMEOUT 240 HOSTS liggghts)
