@@ -16,7 +16,8 @@ if ! cmake -S "$ROOT" -B "$BUILD_DIR" "$@" >"$BUILD_DIR/configure.log" 2>&1; the
   echo "build: cmake configure FAILED (log: $BUILD_DIR/configure.log)" >&2
   exit 1
 fi
-grep -E '^-- (LAMMPS fix API|LAMMPS headers|No liblammps|No tests|Modern LAMMPS host|LIGGGHTS host)' "$BUILD_DIR/configure.log" \
+summary='^-- (LAMMPS fix API|LAMMPS headers|No liblammps|No tests|Modern LAMMPS host|LIGGGHTS host)'
+grep -E "$summary" "$BUILD_DIR/configure.log" \
   | sed 's/^-- /build: /' || true
 
 t0=$SECONDS
