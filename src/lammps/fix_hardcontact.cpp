@@ -37,8 +37,10 @@ hardcontact::FixOptions checked_options(LAMMPS *lmp, int narg, char **arg)
       lmp->error->all(FLERR, "Fix hardcontact friction requires atom attributes omega and "
                              "torque (the spheres spin): use atom_style sphere");
     if (!hardcontact::solver_has_friction(o.solver_name))
-      lmp->error->all(FLERR, "Fix hardcontact solver {} has no friction: use apgd, pgs or "
-                             "uzawa with friction", o.solver_name);
+      hardcontact::compat::error_all(lmp->error, FLERR,
+                                     "Fix hardcontact solver {} has no friction: use apgd, pgs or "
+                                     "uzawa with friction",
+                                     o.solver_name);
   }
   return o;
 }

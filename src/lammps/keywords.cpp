@@ -191,8 +191,10 @@ void parse_friction(LAMMPS *lmp, char **values, int n, FixOptions &o)
 {
   const double mu = number(lmp, "friction", values[0]);
   if (mu < 0.0)
-    lmp->error->all(FLERR, "Fix hardcontact friction must be a Coulomb coefficient >= 0 "
-                           "(0: frictionless), got {}", values[0]);
+    compat::error_all(lmp->error, FLERR,
+                      "Fix hardcontact friction must be a Coulomb coefficient >= 0 "
+                      "(0: frictionless), got {}",
+                      values[0]);
   set_pair_values(lmp, values, n, mu, o.friction);
 }
 
