@@ -242,6 +242,15 @@ inline void set_exchange_size(LAMMPS_NS::Fix *fix, LAMMPS_NS::Comm *comm, int pe
 #endif
 }
 
+inline void forward_comm(LAMMPS_NS::Comm *comm, LAMMPS_NS::Fix *fix)
+{
+#if HARDCONTACT_MODERN_API && !HARDCONTACT_LIGGGHTS
+  comm->forward_comm(fix);
+#else
+  comm->forward_comm_fix(fix);
+#endif
+}
+
 // ------------------------------------------------------------------------- variables
 // After evaluating a variable outside thermo output: the computes it used must be invoked again
 // on the next step (Modify::addstep_compute). LIGGGHTS's Modify leaves the count of those
@@ -264,15 +273,6 @@ inline int find_variable(LAMMPS_NS::Variable *variable, const std::string &name)
   return variable->find(writable.data());
 #else
   return variable->find(name.c_str());
-#endif
-}
-
-inline void forward_comm(LAMMPS_NS::Comm *comm, LAMMPS_NS::Fix *fix)
-{
-#if HARDCONTACT_MODERN_API && !HARDCONTACT_LIGGGHTS
-  comm->forward_comm(fix);
-#else
-  comm->forward_comm_fix(fix);
 #endif
 }
 
