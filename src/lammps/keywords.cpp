@@ -202,9 +202,10 @@ void parse_rolling(LAMMPS *lmp, char **values, int n, FixOptions &o)
 {
   const double mur = number(lmp, "rolling", values[0]);
   if (mur < 0.0)
-    lmp->error->all(FLERR, "Fix hardcontact rolling must be a coefficient >= 0 (the rolling "
-                           "torque is at most rolling x R x the normal force), got {}",
-                    values[0]);
+    compat::error_all(lmp->error, FLERR,
+                      "Fix hardcontact rolling must be a coefficient >= 0 (the rolling "
+                      "torque is at most rolling x R x the normal force), got {}",
+                      values[0]);
   set_pair_values(lmp, values, n, mur, o.rolling);
 }
 
