@@ -74,13 +74,15 @@ _INT_DUMP_COLUMNS = {"id", "type", "mol", "proc", "procp1", "ix", "iy", "iz", "i
 
 
 def liggghts_deck(text):
-    """A LAMMPS deck of the tests as LIGGGHTS 3.8 runs it. Three commands differ, nothing else:
+    """A LAMMPS deck of the tests as LIGGGHTS 3.8 runs it. Four commands differ, nothing else:
       * `newton off` first: LIGGGHTS's granular neighbour lists hold a pair across processors
         on both only with newton off, which the fix requires there (as pair gran with history
         does; LIGGGHTS decks set it by convention);
       * `dump_modify ID format float F`: LIGGGHTS (LAMMPS of 2013) takes one format for the
         whole line, built here from the dump's columns (integers %d, the rest F);
-      * `comm_modify KEYWORDS` is `communicate single KEYWORDS` there (vel yes, cutoff X).
+      * `comm_modify KEYWORDS` is `communicate single KEYWORDS` there (vel yes, cutoff X);
+      * `set ... omega 0 0 0` is left out (LIGGGHTS's set has no omega; atoms start without
+        spin); a deck setting a nonzero spin that way cannot run there (LammpsRunError).
     Everything else (atom_style sphere, read_data, computes, restarts) LIGGGHTS reads as LAMMPS
     does."""
     columns = {}
@@ -92,6 +94,14 @@ def liggghts_deck(text):
             columns[words[1]] = [w for w in words[6:] if not w.startswith("#")]
         if words[:1] == ["comm_modify"]:
             line = " ".join(["communicate", "single"] + words[1:])
+        if words[:1] == ["set"] and "omega" in words:
+            k = words.index("omega")
+            spin = words[k + 1:k + 4]
+            if len(words) != k + 4 or any(float(w) != 0.0 for w in spin):
+                raise LammpsRunError("LIGGGHTS 3.8's set has no omega (spins come only from a "
+                                     "data file): cannot run '%s' there" % line.strip())
+            continue    # zero spins: what every LIGGGHTS atom starts with
+
         if len(words) >= 5 and words[0] == "dump_modify" and "format" in words:
             k = words.index("format")
             if k + 2 < len(words) and words[k + 1] == "float" and words[1] in columns:

@@ -166,6 +166,10 @@ def rolling_tests(args):
     """Rolling resistance (`rolling mur`, torque at most mur R F_n with R = r on a wall)."""
     r, mur, v0 = 0.5, 0.1, 1.0
     # rolling on a flat floor: decelerates at 5/7 mur g, stops after 7 v0^2 / (10 mur g)
+    if args.lmp.name == "liggghts":
+        # its start, a sphere already rolling, needs `set ... omega`, which LIGGGHTS 3.8 lacks
+        print("rolling_stop: not run on LIGGGHTS (no set omega); the other rolling cases are")
+        return rolling_incline_tests(args, r, mur)
     _, t, th = incline(args, "rolling_stop", 0.0, "friction 0.5 rolling %g" % mur, n=2000, v0=v0,
                        flat=True, w0=v0 / r)
     a = 5.0 / 7.0 * mur
@@ -182,6 +186,10 @@ def rolling_tests(args):
              "(analytic 7 v0^2 / (10 mur g) - h v0 / 2 = %.6g) and stays (|v| %.3g)"
              % (mur, err_v, tstop, x[-1] - x[0], dist, float(np.abs(th["v_vx"][rest]).max())))
     check_height("rolling_stop", th)
+    rolling_incline_tests(args, r, mur)
+
+
+def rolling_incline_tests(args, r, mur):
     # on an incline: held at rest while tan(theta) <= mur, else rolls at 5/7 g (sin - mur cos)
     _, t, th = incline(args, "rolling_hold", 5.0, "friction 0.5 rolling %g" % mur, n=300)
     # (without it the sphere would roll at 5/7 g sin t = 0.19 by the end; the rest is held to
