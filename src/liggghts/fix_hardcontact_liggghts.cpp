@@ -7,7 +7,6 @@
 #include "modify.h"
 #include "neighbor.h"
 
-
 using namespace LAMMPS_NS;
 using namespace FixConst;
 

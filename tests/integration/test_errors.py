@@ -122,7 +122,8 @@ SKIN_DECK = deck(setup="group fast id 4\nvelocity fast set 1 0 0 units box",
 # name, deck, phrases the ERROR line must hold (case-insensitive), run with np 4 too,
 # files to write into the work directory {name: text}
 # (min_np: run only with at least that many ranks)
-Case = namedtuple("Case", "name deck phrases np4 files min_np modern liggghts liggghts_setup_nan")
+Case = namedtuple("Case", "name deck phrases np4 files min_np modern liggghts liggghts_setup_nan "
+                         "hosts")
 
 # LIGGGHTS 3.8 has no region walls (lammps_compat.h: its regions do not number their faces):
 # every 'wall region ID' deck stops with this error there instead
@@ -130,14 +131,15 @@ LIGGGHTS_NO_REGION_WALLS = ["not available on this host", "LIGGGHTS 3.8 regions"
 
 
 def case(name, deck_text, phrases, np4=False, files=None, min_np=1, modern=None, liggghts=None,
-         liggghts_setup_nan=False):
+         liggghts_setup_nan=False, hosts=None):
     """modern: phrases of the error that a modern LAMMPS gives itself before the fix sees the
     bad input (its own check, possibly with error->one); None: the fix's error on every host.
     liggghts: the same for LIGGGHTS 3.8 (its own error, or the fix's where it must differ there).
     liggghts_setup_nan: LIGGGHTS prints a NaN of its own in the thermo row of step 0, before
-    the fix sees the bad value (that row is left out of the NaN check on that host)."""
+    the fix sees the bad value (that row is left out of the NaN check on that host).
+    hosts: the hosts where the deck is bad input (None: all)."""
     return Case(name, deck_text, phrases, np4, files or {}, min_np, modern, liggghts,
-                liggghts_setup_nan)
+                liggghts_setup_nan, hosts)
 
 
 CASES = [
@@ -253,6 +255,10 @@ CASES = [
          liggghts_setup_nan=True),
     case("centre_behind_wall", deck("wall zplane NULL 4.2"),
          ["centre of atom 4 is behind a wall", "move the wall or the atom"], np4=True),
+    # LIGGGHTS only: its granular neighbour list holds cross-processor pairs on both
+    # processors only with newton off (the LIGGGHTS host's decks get 'newton off' first)
+    case("newton_on_liggghts", deck(setup="newton on off"),    # pair on, bond as before
+         ["requires 'newton off'", "LIGGGHTS"], np4=True, hosts=("liggghts",)),
     # box and run style
     case("triclinic_box", TRICLINIC_DECK, ["does not support triclinic"]),
     case("run_style_respa", deck(after_fix="run_style respa 2 2"),
@@ -494,7 +500,8 @@ def test():
         lr.check(not still, "%d of %d known fix bugs still present" % (len(still), len(KNOWN_BUGS)))
         return
 
-    cases = [c for c in CASES if (args.np < 4 or c.np4) and args.np >= c.min_np]
+    cases = [c for c in CASES if (args.np < 4 or c.np4) and args.np >= c.min_np
+             and (c.hosts is None or args.lmp.name in c.hosts)]
     failures = []
     for c in cases:
         failures += check_error_case(args, c)
