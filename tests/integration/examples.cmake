@@ -36,3 +36,8 @@ hardcontact_deck_test(NAME example_bouncing_ball SCRIPT integration/test_example
 # liggghts_settle (LIGGGHTS decks): 468 beads settle, hard contacts and the Hertz twin, as shipped
 hardcontact_deck_test(NAME example_liggghts_settle SCRIPT integration/test_example_liggghts_settle.py
                       NP 1 LABELS examples TIMEOUT 240 HOSTS liggghts)
+
+# heap: 300 spheres poured onto a rough floor with mu 0.1 and with mu 0.5 + rolling 0.1:
+# the angle of repose grows with friction (launcher only: the modern host runs the same fix)
+hardcontact_deck_test(NAME example_heap SCRIPT integration/test_example_heap.py
+                      NP 1 LABELS examples TIMEOUT 300 HOSTS launcher)
