@@ -4,8 +4,8 @@ the z axis through x = y = 0, floor at z = 0):
 
     heap_angle.py DUMP [--floor Z] [--json]
 
-The surface height h(rho) is the highest sphere top z + r in rings of width 1 (in units of the
-largest diameter) around the axis, above the floor Z (default 0; in.heap's rough floor of fixed
+The surface height h(rho) is the second-highest sphere top z + r (one sphere in flight does
+not make a peak) in rings of width 1 (in units of the largest diameter) around the axis, above the floor Z (default 0; in.heap's rough floor of fixed
 spheres has its top at 1); the angle is the slope of a straight-line fit of h(rho) over
 the rings whose height lies between 20 % (and at least 1.5 diameters: spheres that rolled away
 form a monolayer around the foot) and 80 % of the peak - the flank of the cone, away from the
@@ -43,16 +43,27 @@ def last_frame(path):
     return {c: data[:, i] for i, c in enumerate(cols)}
 
 
+def ring_heights(rho, top, d):
+    """Surface height per ring of width d: the second-highest sphere top in the ring (one
+    sphere still in flight, or perched on the heap, does not make a peak)."""
+    nbin = int(rho.max() / d) + 1
+    best = np.zeros((nbin, 2))
+    for b, t in zip((rho / d).astype(int), top):
+        if t > best[b, 0]:
+            best[b] = (t, best[b, 0])
+        elif t > best[b, 1]:
+            best[b, 1] = t
+    return np.where(best[:, 1] > 0.0, best[:, 1], best[:, 0])
+
+
 def heap_angle(path, floor=0.0):
     a = last_frame(path)
     x, y, z, r = a["x"], a["y"], a["z"] - floor, a["radius"]
     d = 2.0 * float(r.max())
     rho = np.hypot(x, y)
     top = z + r
-    nbin = int(rho.max() / d) + 1
-    h = np.zeros(nbin)
-    for b, t in zip((rho / d).astype(int), top):
-        h[b] = max(h[b], t)
+    h = ring_heights(rho, top, d)
+    nbin = len(h)
     centres = (np.arange(nbin) + 0.5) * d
     peak = float(h.max())
     ipeak = int(np.argmax(h))

@@ -31,10 +31,8 @@ def main():
         x, y, z, r = a["x"], a["y"], a["z"] - FLOOR, a["radius"]
         d = 2.0 * float(r.max())
         rho = np.hypot(x, y)
-        nbin = int(rho.max() / d) + 1
-        h = np.zeros(nbin)
-        for b, t in zip((rho / d).astype(int), z + r):
-            h[b] = max(h[b], t)
+        h = heap_angle.ring_heights(rho, z + r, d)
+        nbin = len(h)
         flank = "%.1f" % res["angle"] if res["angle"] is not None else "-"
         prof.plot((np.arange(nbin) + 0.5) * d, h, "o-", ms=3,
                   label="%s: flank %s deg, cone %.1f deg" % (label, flank, res["cone_angle"]))

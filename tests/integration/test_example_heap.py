@@ -5,7 +5,8 @@ Checks: every solve converged (f_hc[6] = 0), no overlap beyond 2 tol of the cont
 any thermo output (f_hc[7]), the heaps settled (kinetic energy per sphere below 1 % of
 m g d), and the angle of repose (examples/heap/heap_angle.py, the cone angle from the heap's height
 and volume: heaps of 400 are too small for a flank fit) is larger with more friction and
-rolling resistance by at least 5 degrees, each angle in a plausible range."""
+rolling resistance by at least 3 degrees and the heap higher by half a diameter, each angle in
+a plausible range."""
 
 import os
 import sys
@@ -48,7 +49,7 @@ def test():
     lr.check(5.0 <= lo < 22.0 and 18.0 < hi < 40.0,
              "cone angles in plausible ranges: mu 0.1: %.1f deg, mu 0.5 + rolling 0.1: %.1f deg"
              % (lo, hi))
-    lr.check(hi >= lo + 5.0 and high["peak"] > low["peak"],
+    lr.check(hi >= lo + 3.0 and high["peak"] >= low["peak"] + 0.5,
              "more friction and rolling resistance, a steeper and higher heap (%.1f vs %.1f deg, "
              "peak %.2f vs %.2f)" % (hi, lo, high["peak"], low["peak"]))
 
