@@ -33,11 +33,11 @@ run friction_0.5_rolling_0.1 now "$LMP" "friction 0.5 rolling 0.1"
 import csv, sys
 rows = list(csv.DictReader(open(sys.argv[1])))
 base = next(r for r in rows if r["case"] == "frictionless" and r["build"] == "now")
-print("| case | build | spheres | steps | loop (s) | time / frictionless | iterations/step (max) | active contacts at the end | largest overlap (d ~ 0.9) | load |")
-print("|---|---|---|---|---|---|---|---|---|---|")
+print("| case | build | spheres | steps | loop (s) | time / frictionless | iterations/step (max) | active contacts at the end | load |")
+print("|---|---|---|---|---|---|---|---|---|")
 for r in rows:
-    print("| %s | %s | %s | %s | %s | %.2f | %s (%s) | %s | %s | %s |" % (
+    print("| %s | %s | %s | %s | %s | %.2f | %s (%s) | %s | %s |" % (
         r["case"], r["build"], r["spheres"], r["steps"], r["loop_s"],
         float(r["loop_s"]) / float(base["loop_s"]), r["iterations_per_step"], r["max_iterations"],
-        r["active_end"], r["max_overlap"], r["load1"]))
+        r["active_end"], r["load1"]))
 PYEOF
