@@ -11,6 +11,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
+#include <limits>
 
 using namespace LAMMPS_NS;
 
@@ -165,48 +166,45 @@ void set_pair_values(LAMMPS *lmp, char **values, int n, double value, std::vecto
     }
 }
 
+// One coefficient per type pair, in [lo, hi]; else "Fix hardcontact NAME must be WHAT, got V".
+void parse_pair_coefficient(LAMMPS *lmp, const char *name, const char *what, double lo,
+                            double hi, char **values, int n, std::vector<double> &table)
+{
+  const double v = number(lmp, name, values[0]);
+  if (v < lo || v > hi)
+    compat::error_all(lmp->error, FLERR, "Fix hardcontact {} must be {}, got {}", name, what,
+                      values[0]);
+  set_pair_values(lmp, values, n, v, table);
+}
+
+const double kUnbounded = std::numeric_limits<double>::infinity();
+
 void parse_restitution(LAMMPS *lmp, char **values, int n, FixOptions &o)
 {
-  const double e = number(lmp, "restitution", values[0]);
-  if (e < 0.0 || e > 1.0)
-    compat::error_all(lmp->error, FLERR,
-                      "Fix hardcontact restitution must be in [0, 1] (0: inelastic, the "
-                      "paper's scheme; 1: elastic), got {}",
-                      values[0]);
-  set_pair_values(lmp, values, n, e, o.restitution);
+  parse_pair_coefficient(lmp, "restitution",
+                         "in [0, 1] (0: inelastic, the paper's scheme; 1: elastic)", 0.0, 1.0,
+                         values, n, o.restitution);
 }
 
 void parse_cohesion(LAMMPS *lmp, char **values, int n, FixOptions &o)
 {
-  const double f = number(lmp, "cohesion", values[0]);
-  if (f < 0.0)
-    compat::error_all(lmp->error, FLERR,
-                      "Fix hardcontact cohesion must be a force >= 0 (the pull a touching "
-                      "contact holds before it opens), got {}",
-                      values[0]);
-  set_pair_values(lmp, values, n, f, o.cohesion);
+  parse_pair_coefficient(lmp, "cohesion",
+                         "a force >= 0 (the pull a touching contact holds before it opens)",
+                         0.0, kUnbounded, values, n, o.cohesion);
 }
 
 void parse_friction(LAMMPS *lmp, char **values, int n, FixOptions &o)
 {
-  const double mu = number(lmp, "friction", values[0]);
-  if (mu < 0.0)
-    compat::error_all(lmp->error, FLERR,
-                      "Fix hardcontact friction must be a Coulomb coefficient >= 0 "
-                      "(0: frictionless), got {}",
-                      values[0]);
-  set_pair_values(lmp, values, n, mu, o.friction);
+  parse_pair_coefficient(lmp, "friction", "a Coulomb coefficient >= 0 (0: frictionless)", 0.0,
+                         kUnbounded, values, n, o.friction);
 }
 
 void parse_rolling(LAMMPS *lmp, char **values, int n, FixOptions &o)
 {
-  const double mur = number(lmp, "rolling", values[0]);
-  if (mur < 0.0)
-    compat::error_all(lmp->error, FLERR,
-                      "Fix hardcontact rolling must be a coefficient >= 0 (the rolling "
-                      "torque is at most rolling x R x the normal force), got {}",
-                      values[0]);
-  set_pair_values(lmp, values, n, mur, o.rolling);
+  parse_pair_coefficient(lmp, "rolling",
+                         "a coefficient >= 0 (the rolling torque is at most rolling x R x the "
+                         "normal force)",
+                         0.0, kUnbounded, values, n, o.rolling);
 }
 
 void parse_disc(LAMMPS *lmp, char **, int, FixOptions &o)
