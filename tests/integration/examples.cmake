@@ -38,6 +38,7 @@ hardcontact_deck_test(NAME example_liggghts_settle SCRIPT integration/test_examp
                       NP 1 LABELS examples TIMEOUT 240 HOSTS liggghts)
 
 # heap: 300 spheres poured onto a rough floor with mu 0.1 and with mu 0.5 + rolling 0.1:
-# the angle of repose grows with friction (launcher only: the modern host runs the same fix)
+# the angle of repose grows with friction (LAMMPS hosts; LIGGGHTS pours with fix insert/pour
+# and particle templates, another deck)
 hardcontact_deck_test(NAME example_heap SCRIPT integration/test_example_heap.py
-                      NP 1 LABELS examples TIMEOUT 300 HOSTS launcher)
+                      NP 1 LABELS examples TIMEOUT 300 HOSTS launcher modern)

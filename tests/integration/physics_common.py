@@ -16,6 +16,16 @@ import lammps_run as lr
 DUMP_COLUMNS = "id type radius mass x y z vx vy vz f_hc[1] f_hc[2] f_hc[3] f_hc[4]"
 
 
+# The first lines of a 3D deck of spheres in a box with free (non-periodic) boundaries.
+HEADER_3D_FREE = """
+units           lj
+atom_style      sphere
+dimension       3
+boundary        f f f
+atom_modify     map array
+"""
+
+
 # One sphere of diameter 1 above a floor at z = 0 (periodic in x, y) under g = 1: format with
 # x, y, z (centre), fix_extra (keywords after the wall), h, and the output and run lines.
 DROP_ON_FLOOR = """

@@ -20,13 +20,7 @@ import physics_common as pc
 
 HANG = pc.DROP_ON_FLOOR.replace("wall zplane 0 NULL", "wall zplane NULL 10.0")
 
-PAIR = """
-units           lj
-atom_style      sphere
-dimension       3
-boundary        f f f
-atom_modify     map array
-region          box block -5 5 -5 5 -5 5
+PAIR = pc.HEADER_3D_FREE + """region          box block -5 5 -5 5 -5 5
 create_box      1 box
 create_atoms    1 single -0.5 0.0 0.0
 create_atoms    1 single 0.5 0.0 0.0

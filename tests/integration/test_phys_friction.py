@@ -22,6 +22,7 @@ mechanics gives, at the rank count ctest gives (np 1/2/4):
    at the analytic distance 7 v0^2 / (10 mur g) (less h v0 / 2, the scheme's position update),
    then stays; on an incline it is held at rest while tan(theta) <= mur and rolls at
    5/7 g (sin - mur cos) above.
+   In 2d with `disc` a disc rolls down the incline at 2/3 g sin(theta) (a sphere at 5/7).
 3. An oblique pair of equal spheres (no gravity): with v_t / v_n below 7/2 mu the contact
    sticks (the contact points leave with no relative tangential velocity), above it slides
    (tangential impulse = mu x normal impulse, read from the local dump); momentum exact and
@@ -162,6 +163,51 @@ def launched(args):
     check_height("launch", th)
 
 
+DISC = """
+units           lj
+atom_style      sphere
+dimension       2
+boundary        p f p
+atom_modify     map array
+comm_modify     vel yes
+region          box block -30 30 0 6 -0.5 0.5
+create_box      1 box
+create_atoms    1 single -20 0.5 0
+set             atom 1 diameter 1.0 density 1.0
+pair_style      none
+neighbor        0.5 bin
+fix             hc all hardcontact wall yplane 0 NULL friction 0.5 {keywords}
+fix             g all gravity 1.0 vector {gx} {gy} 0
+fix             2d all enforce2d
+timestep        {h}
+variable        vx equal vx[1]
+variable        y equal y[1]
+thermo_style    custom step v_vx v_y
+thermo_modify   format float %.15g
+thermo          10
+run             500
+"""
+
+
+def disc_tests(args):
+    """`disc`: in 2d a disc rolls down an incline at 2/3 g sin(theta) (I = 1/2 m r^2), a sphere
+    at 5/7 g sin(theta) (20 deg, mu 0.5: both below their slip thresholds, tan <= 3 mu and
+    7/2 mu)."""
+    th = math.radians(20.0)
+    for name, kw, a in (("disc", "disc", 2.0 / 3.0), ("sphere_2d", "", 5.0 / 7.0)):
+        wd = lr.fresh_workdir("%s/%s" % (args.workdir, name))
+        res = lr.run_deck(args.lmp, DISC.format(keywords=kw, gx=repr(math.sin(th)),
+                                                gy=repr(-math.cos(th)), h=H),
+                          args.np, wd, timeout=args.timeout)
+        t_ = res.thermo[-1]
+        t = np.asarray(t_["Step"], dtype=float) * H
+        err = float(np.abs(np.asarray(t_["v_vx"]) - a * math.sin(th) * t).max())
+        dy = float(np.abs(np.asarray(t_["v_y"]) - 0.5).max())
+        lr.check(err <= 1e-5 and dy <= 1e-6,
+                 "%s: rolls at %.4g g sin(theta) (%.9g at t = %g, error %.3g), on the floor (%.3g)"
+                 % (name, a, a * math.sin(th) * t[-1], t[-1], err, dy))
+
+
 def rolling_tests(args):
     """Rolling resistance (`rolling mur`, torque at most mur R F_n with R = r on a wall)."""
     r, mur, v0 = 0.5, 0.1, 1.0
@@ -226,13 +272,7 @@ def frictionless_same(args):
     lr.check(same, "friction 0: the same dump as no keyword, bit for bit (%d frames)" % len(dumps[0]))
 
 
-PAIR = """
-units           lj
-atom_style      sphere
-dimension       3
-boundary        f f f
-atom_modify     map array
-comm_modify     vel yes
+PAIR = pc.HEADER_3D_FREE + """comm_modify     vel yes
 read_data       data.two
 pair_style      none
 neighbor        1.0 bin
@@ -308,13 +348,7 @@ def oblique(args):
                      "still slipping (%.3g)" % (ratio, np.linalg.norm(slip_t)))
 
 
-GAS = """
-units           lj
-atom_style      sphere
-dimension       3
-boundary        f f f
-atom_modify     map array
-comm_modify     vel yes
+GAS = pc.HEADER_3D_FREE + """comm_modify     vel yes
 read_data       gas.data
 pair_style      none
 neighbor        0.3 bin
@@ -393,6 +427,7 @@ def test():
     incline_tests(args)
     launched(args)
     rolling_tests(args)
+    disc_tests(args)
     frictionless_same(args)
     oblique(args)
     gas(args)

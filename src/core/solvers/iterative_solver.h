@@ -40,11 +40,11 @@ class IterativeSolver : public Solver {
     for (int k = 0;; ++k) {
       report.iterations = k;
       report.residual = ops.max_all(set_residual(mu, u));
+      [[maybe_unused]] double drift = 0.0;    // friction: how far the shifts are from Law::shift of the iterate
       if constexpr (B > 1) {
         // Friction's fixed point: solving the problem of stale shifts further than they are
-        // off is wasted work, so the shifts move as soon as the residual is below their drift
-        // (the drift: how far the shifts are from Law::shift of the iterate).
-        const double drift = shift_drift();
+        // off is wasted work, so the shifts move as soon as the residual is below their drift.
+        drift = shift_drift();
         if (drift > s.tol && report.residual <= kShiftEagerness * drift && k < s.maxiter) {
           // a fixed point that stopped approaching: from now on shifts only go down
           if (drift < 0.5 * best_drift_) {
@@ -54,7 +54,7 @@ class IterativeSolver : public Solver {
             downward_ = true;
             continue;
           }
-          update_shifts(0.0);
+          move_shifts();
           shifted(s, mu, u);
           continue;
         }
@@ -63,7 +63,8 @@ class IterativeSolver : public Solver {
       if (verdict == Verdict::Converged) {
         if constexpr (B > 1) {
           // the problem solved had the last shifts: converged once they are its own
-          if (k < s.maxiter && update_shifts(s.tol)) {
+          if (k < s.maxiter && drift > s.tol) {
+            move_shifts();
             shifted(s, mu, u);
             continue;
           }
@@ -188,11 +189,9 @@ class IterativeSolver : public Solver {
       shift[c] = Law::shift(g, coef(c));
     }
   }
-  // The shifts of the current iterate (g_ at u(mu)); true if any moved by more than tol of its
-  // row scale, in which case they and g_ are updated.
-  bool update_shifts(double tol)
+  // The shifts, and g_ with them, moved to those of the current iterate (g_ at u(mu)).
+  void move_shifts()
   {
-    if (!(shift_drift() > tol)) return false;
     std::vector<double> &shift = op_.shift();
     shift_delta_.resize(shift.size());
     for (const int c : set_.rows()) {
@@ -201,7 +200,6 @@ class IterativeSolver : public Solver {
       g_[static_cast<size_t>(B) * c] += next - shift[c];
       shift[c] = next;
     }
-    return true;
   }
 };
 
