@@ -12,7 +12,7 @@ source "$(dirname "${BASH_SOURCE[0]}")/common.sh" friction_ "$@"
 NZ=10; STEPS=150
 [ "$MODE" = quick ] && { NZ=4; STEPS=60; }
 DECK="$WORK/in.pile3d"
-sed 's/wall zplane 0 NULL$/wall zplane 0 NULL ${extra}/' "$ROOT/bench/compare/in.pile3d" > "$DECK"
+sed 's/hardcontact solver ${solver} wall/hardcontact solver ${solver} ${extra} wall/' "$ROOT/bench/compare/in.pile3d" > "$DECK"
 CSV="$RESULTS/friction_cost.csv"
 echo "case,build,spheres,steps,loop_s,iterations_per_step,max_iterations,active_end,max_overlap,load1" > "$CSV"
 run() {    # run NAME BUILD LMP EXTRA

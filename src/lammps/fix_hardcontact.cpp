@@ -120,6 +120,14 @@ void FixHardContact::init()
   walls_.init_positions();
   walls_.check_in_box();
   regions_.init(static_cast<int>(walls_.walls().size()));
+  wall_friction_.clear();
+  if (options_.has_wall_friction()) {
+    // wall indices: the planes, then kFacesPerRegion per region (region_wall_source.h)
+    wall_friction_ = options_.plane_friction;
+    for (const double mu : options_.region_friction)
+      wall_friction_.insert(wall_friction_.end(), hardcontact::RegionWallSource::kFacesPerRegion,
+                            mu);
+  }
   if (!solver_->traits().distributed && comm->nprocs > 1)
     hardcontact::compat::error_all(
         error, FLERR,
@@ -166,6 +174,7 @@ void FixHardContact::initial_integrate(int)
   effects.cohesion = &options_.cohesion;
   if (options_.has_friction()) {
     effects.friction = &options_.friction;
+    if (!wall_friction_.empty()) effects.wall_friction = &wall_friction_;
     if (options_.has_rolling()) effects.rolling = &options_.rolling;
     effects.inertia = options_.disc ? 0.5 : 0.4;
   }

@@ -70,6 +70,9 @@ class FixHardContact : public Fix {
   hardcontact::ContactStep step_;
   hardcontact::Integrate integrate_;
   hardcontact::Outputs outputs_;
+  // by wall index: a wall's own friction (wall ... friction mu), FixOptions::kByType for the
+  // type's; empty when no wall has its own
+  std::vector<double> wall_friction_;
 
   void history_resized();
 };

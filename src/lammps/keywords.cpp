@@ -3,6 +3,7 @@
 #include "lammps_compat.h"
 
 #include "atom.h"
+#include "comm.h"
 #include "domain.h"
 #include "error.h"
 #include "lammps.h"
@@ -29,6 +30,8 @@ struct Keyword {
   Parser parse;
   const char *doc;
 };
+
+bool is_keyword(const char *word);
 
 double number(LAMMPS *lmp, const char *keyword, const char *word)
 {
@@ -107,6 +110,7 @@ void parse_wall(LAMMPS *lmp, char **values, int n, FixOptions &o)
     if (n != 2)
       lmp->error->all(FLERR, "Fix hardcontact wall region takes one value, the region ID");
     o.wall_regions.emplace_back(values[1]);
+    o.region_friction.push_back(FixOptions::kByType);
     return;
   }
   if (n != 3)
@@ -141,11 +145,37 @@ void parse_wall(LAMMPS *lmp, char **values, int n, FixOptions &o)
   if (has_lo) {
     o.walls.push_back({dim, true, lo});
     o.wall_variables.push_back(var_lo);
+    o.plane_friction.push_back(FixOptions::kByType);
   }
   if (has_hi) {
     o.walls.push_back({dim, false, hi});
     o.wall_variables.push_back(var_hi);
+    o.plane_friction.push_back(FixOptions::kByType);
   }
+}
+
+// `friction mu` right after a wall's values: that wall's own coefficient (every plane of an
+// `xplane lo hi`, every face of a region). Returns the words it read.
+int parse_wall_friction(LAMMPS *lmp, char **arg, int narg, int iarg, size_t planes_before,
+                        size_t regions_before, FixOptions &o)
+{
+  if (iarg + 1 >= narg)
+    lmp->error->all(FLERR, "Fix hardcontact wall ... friction needs a value (the wall's own "
+                           "Coulomb coefficient)");
+  const double mu = number(lmp, "wall friction", arg[iarg + 1]);
+  if (mu < 0.0)
+    compat::error_all(lmp->error, FLERR,
+                      "Fix hardcontact wall friction must be a Coulomb coefficient >= 0, got {}",
+                      arg[iarg + 1]);
+  if (iarg + 2 < narg && !is_keyword(arg[iarg + 2]))
+    compat::error_all(lmp->error, FLERR,
+                      "Fix hardcontact wall ... friction takes one value, the wall's own "
+                      "coefficient, got '{}' after it: for type pairs write 'friction mu I J' "
+                      "before the wall keyword",
+                      arg[iarg + 2]);
+  for (size_t k = planes_before; k < o.plane_friction.size(); ++k) o.plane_friction[k] = mu;
+  for (size_t k = regions_before; k < o.region_friction.size(); ++k) o.region_friction[k] = mu;
+  return 2;
 }
 
 // A value per type pair (I, J LAMMPS type ranges, default every pair; later lines win) into a
@@ -233,7 +263,8 @@ const Keyword keywords[] = {
     {"warmstart", 1, 0, parse_warmstart, "warmstart yes/no: start from the last step's forces"},
     {"wall", 2, 1, parse_wall,
      "wall xplane|yplane|zplane lo hi: flat walls, NULL for none, v_name for a moving one; "
-     "wall region ID: the surface of a region"},
+     "wall region ID: the surface of a region; either followed by 'friction mu': the wall's "
+     "own Coulomb coefficient"},
     {"restitution", 1, 2, parse_restitution,
      "restitution e [I J]: Newton's restitution e in [0, 1] for type pairs I J (all: default)"},
     {"bounce", 1, 0, parse_bounce, "bounce vmin: contacts closing slower stay inelastic"},
@@ -271,6 +302,7 @@ std::string keyword_list()
 FixOptions parse_keywords(LAMMPS *lmp, int narg, char **arg, int first)
 {
   FixOptions options;
+  bool pair_friction = false;    // a 'friction' keyword of its own (not a wall's)
   int iarg = first;
   while (iarg < narg) {
     const Keyword *found = nullptr;
@@ -290,9 +322,27 @@ FixOptions parse_keywords(LAMMPS *lmp, int narg, char **arg, int first)
                           found->name, found->nvalues, found->nvalues + found->optional);
       n += found->optional;
     }
+    const size_t planes_before = options.plane_friction.size();
+    const size_t regions_before = options.region_friction.size();
     found->parse(lmp, arg + iarg + 1, n, options);
     iarg += 1 + n;
+    if (found->parse == parse_wall) {
+      if (iarg < narg && strcmp(arg[iarg], "friction") == 0)
+        iarg += parse_wall_friction(lmp, arg, narg, iarg, planes_before, regions_before, options);
+    } else if (found->parse == parse_friction) {
+      pair_friction = true;
+    }
   }
+  // A deck written before walls had their own coefficient ('wall zplane 0 NULL friction 0.5')
+  // meant friction everywhere: say what it means now.
+  if (options.has_wall_friction() && !pair_friction && lmp->comm->me == 0)
+    compat::warning(lmp->error, FLERR,
+                    "Fix hardcontact: 'friction' after a wall keyword is that wall's own "
+                    "coefficient; the spheres have no friction with each other: write "
+                    "'friction mu' before the wall keyword for the pairs");
+  // the pair table exists whenever a friction law is solved (walls only: pairs at 0)
+  if (options.has_wall_friction() && options.friction.empty())
+    options.friction.assign((lmp->atom->ntypes + 1) * (lmp->atom->ntypes + 1), 0.0);
   return options;
 }
 

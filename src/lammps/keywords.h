@@ -21,6 +21,11 @@ struct FixOptions {
   std::vector<PlaneWall> walls;
   std::vector<std::string> wall_variables;    // per wall: equal-style variable name, or ""
   std::vector<std::string> wall_regions;      // IDs of regions whose surfaces are walls
+  // A wall's own Coulomb coefficient (`wall ... friction mu`), per plane wall (as walls) and
+  // per region (as wall_regions); kByType: the pair value of the atom's type with itself.
+  static constexpr double kByType = -1.0;
+  std::vector<double> plane_friction;
+  std::vector<double> region_friction;
   bool warmstart = true;
   // restitution e per type pair, (ntypes + 1)^2 row-major; empty: inelastic (the paper)
   std::vector<double> restitution;
@@ -34,7 +39,19 @@ struct FixOptions {
   // rolling resistance coefficient per type pair, (ntypes + 1)^2 row-major; needs friction
   std::vector<double> rolling;
 
-  bool has_friction() const { return any_positive(friction) || has_rolling(); }
+  bool has_friction() const
+  {
+    return any_positive(friction) || any_positive(plane_friction) ||
+           any_positive(region_friction) || has_rolling();
+  }
+  bool has_wall_friction() const
+  {
+    for (const double v : plane_friction)
+      if (v != kByType) return true;
+    for (const double v : region_friction)
+      if (v != kByType) return true;
+    return false;
+  }
   bool has_rolling() const { return any_positive(rolling); }
   ContactLaw contact_law() const
   {

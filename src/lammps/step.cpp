@@ -68,6 +68,8 @@ StepResult ContactStep::solve(Solver &solver, const SolverSettings &settings,
     if (restitution) pair_values_of_rows(*effects.restitution, targeted, row_e_);
     if (effects.friction) {
       pair_values_of_rows(*effects.friction, targeted, problem_.friction);
+      if (effects.wall_friction)
+        wall_values_of_rows(*effects.wall_friction, targeted, problem_.friction);
       if (effects.rolling) pair_values_of_rows(*effects.rolling, targeted, problem_.rolling);
       problem_.complete_frames(targeted);
     }
@@ -141,6 +143,18 @@ void ContactStep::pair_values_of_rows(const std::vector<double> &table, int firs
     const int ti = type[problem_.body_i[c]];
     const int j = problem_.body_j[c];
     out[c] = table[ti * stride + (is_wall(j) ? ti : type[j])];
+  }
+}
+
+void ContactStep::wall_values_of_rows(const std::vector<double> &by_wall, int first,
+                                      std::vector<double> &out)
+{
+  const int nc = problem_.n_contacts();
+  for (int c = first; c < nc; ++c) {
+    const int j = problem_.body_j[c];
+    if (!is_wall(j)) continue;
+    const double v = by_wall[wall_index(j)];
+    if (v >= 0.0) out[c] = v;
   }
 }
 

@@ -9,6 +9,9 @@ mechanics gives, at the rank count ctest gives (np 1/2/4):
      omega = 5 mu g cos(theta) t / (2 r);
    - `friction 0.5 friction 0.1 1 1` at 20 deg: the later, per-type value (0.1, below the
      rolling threshold 0.104) applies: it slips.
+   - a wall's own coefficient (`wall zplane 0 NULL friction mu`) wins over the type's: with
+     pairs at 0.1 and the floor at 0.5 it rolls; with pairs at 0.5 and the floor (a plane wall,
+     or a plane region's surface, `wall region ID friction 0.1`) at 0.1 it slips.
    In every case the centre stays at height r within 1e-6 (the convex relaxation's artefact,
    lift-off by h mu |v_t| per step, would reach 0.03 here: De Saxce's shift removes it).
    The sphere travels across the processors' sub-domains. Speeds within 1e-5: the solver stops
@@ -59,7 +62,8 @@ velocity        all set {v0} 0 0
 set             atom 1 omega 0 {w0} 0
 pair_style      none
 neighbor        0.5 bin
-fix             hc all hardcontact wall zplane 0 NULL {keywords}
+{pre}
+fix             hc all hardcontact {keywords} {wall}
 fix             g all gravity 1.0 vector {gx} 0 {gz}
 timestep        {h}
 compute         om all property/atom omegay
@@ -77,13 +81,17 @@ run             {n}
 """
 
 
-def incline(args, name, theta_deg, keywords, n=1000, v0=0.0, x0=-20.0, flat=False, w0=0.0):
+FLOOR = "wall zplane 0 NULL"
+
+
+def incline(args, name, theta_deg, keywords, n=1000, v0=0.0, x0=-20.0, flat=False, w0=0.0,
+            wall=FLOOR, pre=""):
     th = math.radians(theta_deg)
     gx, gz = (0.0, -1.0) if flat else (math.sin(th), -math.cos(th))
     wd = "%s/%s" % (args.workdir, name)
     lr.fresh_workdir(wd)
     deck = INCLINE.format(x0=x0, v0=v0, w0=w0, keywords=keywords, gx=repr(gx), gz=repr(gz),
-                          h=H, every=1, dump_every=n, n=n)
+                          h=H, every=1, dump_every=n, n=n, wall=wall, pre=pre)
     res = lr.run_deck(args.lmp, deck, args.np, wd, timeout=args.timeout)
     th_ = res.thermo[-1]
     t = np.asarray(th_["Step"], dtype=float) * H
@@ -127,10 +135,33 @@ def incline_tests(args):
     lr.check(err_w <= 1e-5, "roll: no slip, omega r = v (largest |omega r - v| %.3g)" % err_w)
     check_height("roll", th)
     check_dissipation("roll", th, math.sin(math.radians(20.0)))
+    # a wall's own coefficient (`wall ... friction mu`) wins over the type's: 0.5 on the floor
+    # rolls where the pairs' 0.1 would slip
+    _, t, th = incline(args, "roll_wall_own", 20.0, "friction 0.1",
+                       wall=FLOOR + " friction 0.5")
+    err_v = float(np.abs(th["v_vx"] - a * t).max())
+    lr.check(err_v <= 1e-6 * max(1.0, a * t[-1]),
+             "roll_wall_own (friction 0.1, wall friction 0.5): rolls at 5/7 g sin(theta) "
+             "(largest error %.3g)" % err_v)
+    # only the wall has friction: the same, and a WARNING says that the pairs have none (a deck
+    # written before walls had their own coefficient meant friction everywhere)
+    res, t, th = incline(args, "roll_wall_only", 20.0, "", wall=FLOOR + " friction 0.5")
+    err_v = float(np.abs(th["v_vx"] - a * t).max())
+    warned = [w for w in res.warnings if "that wall's own coefficient" in w]
+    lr.check(err_v <= 1e-6 * max(1.0, a * t[-1]) and len(warned) >= 1,
+             "roll_wall_only (wall friction 0.5 alone): rolls at 5/7 g sin(theta) (largest error "
+             "%.3g) and a WARNING says the pairs have none (%s)" % (err_v, warned[:1]))
     # slipping
-    for name, theta, kw, mu in (("slip", 70.0, "friction 0.5", 0.5),
-                                ("slip_type", 20.0, "friction 0.5 friction 0.1 1 1", 0.1)):
-        _, t, th = incline(args, name, theta, kw)
+    cases = [("slip", 70.0, "friction 0.5", 0.5, FLOOR, ""),
+             ("slip_type", 20.0, "friction 0.5 friction 0.1 1 1", 0.1, FLOOR, ""),
+             ("slip_wall_own", 20.0, "friction 0.5", 0.1, FLOOR + " friction 0.1", "")]
+    if args.lmp.name != "liggghts":    # no region walls there
+        # a region's surface with its own coefficient: a plane region as the floor
+        cases.append(("slip_region_own", 20.0, "friction 0.5", 0.1,
+                      "wall region floor friction 0.1",
+                      "region          floor plane 0 0 0 0 0 1 side in"))
+    for name, theta, kw, mu, wall, pre in cases:
+        _, t, th = incline(args, name, theta, kw, wall=wall, pre=pre)
         s, c = math.sin(math.radians(theta)), math.cos(math.radians(theta))
         lr.check(math.tan(math.radians(theta)) > 3.5 * mu, "%s: above the rolling threshold" % name)
         a = s - mu * c
@@ -176,7 +207,7 @@ create_atoms    1 single -20 0.5 0
 set             atom 1 diameter 1.0 density 1.0
 pair_style      none
 neighbor        0.5 bin
-fix             hc all hardcontact wall yplane 0 NULL friction 0.5 {keywords}
+fix             hc all hardcontact friction 0.5 {keywords} wall yplane 0 NULL
 fix             g all gravity 1.0 vector {gx} {gy} 0
 fix             2d all enforce2d
 timestep        {h}
@@ -262,7 +293,7 @@ def frictionless_same(args):
     dumps = []
     for name, kw in (("none", ""), ("zero", "friction 0")):
         deck = INCLINE.format(x0=-20.0, v0=2.0, w0=0.0, keywords=kw, gx=0.3, gz=-1.0, h=H,
-                              every=50, dump_every=10, n=300)
+                              every=50, dump_every=10, n=300, wall=FLOOR, pre="")
         lr.run_deck(args.lmp, deck.replace("dump.atoms", "dump." + name), args.np, wd,
                     deck_name="in." + name, log_name="log." + name, timeout=args.timeout)
         dumps.append(lr.read_dump(wd / ("dump." + name)))

@@ -48,7 +48,7 @@ pair_style      none
 neighbor        1.0 bin
 timestep        {dt}
 fix             g all gravity 10.0 vector 0 0 -1
-fix             1 all hardcontact tol {tol} wall xplane 0 {w} wall yplane 0 {w} wall zplane 0 NULL {extra}
+fix             1 all hardcontact tol {tol} {extra} wall xplane 0 {w} wall yplane 0 {w} wall zplane 0 NULL
 thermo_style    custom step ke f_1[1] f_1[2] f_1[3] f_1[4] f_1[5] f_1[6] f_1[7]
 thermo_modify   norm no
 thermo          1
