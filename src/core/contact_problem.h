@@ -60,6 +60,12 @@ struct ContactProblem {
   std::vector<Vec3> tangent1, tangent2;
   std::vector<double> arm_i, arm_j;
 
+  // Moving obstacles, present only when a wall moves: per row, the velocity of the wall at
+  // the contact point (zero on pair rows). Its normal part moves the row's gap target (the
+  // host adds h n . u_wall to gap, core/targets.h); its tangential part is the wall's share of
+  // the slip (a rotating drum drags the grains it touches).
+  std::vector<Vec3> wall_velocity;
+
   bool rotates() const { return !inv_inertia.empty(); }
   // Length of a velocity vector: linear velocities, then angular ones if the bodies rotate.
   int n_dof() const { return rotates() ? 2 * n_bodies() : n_bodies(); }
@@ -80,6 +86,7 @@ struct ContactProblem {
     tangent2.clear();
     arm_i.clear();
     arm_j.clear();
+    wall_velocity.clear();
   }
   void add_contact(int i, int j, const Vec3 &n, double d, double s, bool count = true)
   {
@@ -125,9 +132,10 @@ struct ContactProblem {
       tangent2[c] = n.cross(tangent1[c]);
     }
   }
-  // The relative velocity of the contact points of row c (u_wall = 0): n . of it is
-  // normal_speed. The contact point sits at +a_i n from centre i and -a_j n from centre j
-  // (the arms), so spins add a_i n x w_i + a_j n x w_j.
+  // The relative velocity of the contact points of row c: n . of it is normal_speed (a
+  // moving wall's normal speed is in the gap, so only its tangential part is added here).
+  // The contact point sits at +a_i n from centre i and -a_j n from centre j (the arms), so
+  // spins add a_i n x w_i + a_j n x w_j.
   Vec3 slip_velocity(int c, const std::vector<Vec3> &u) const
   {
     const int i = body_i[c], j = body_j[c], nb = n_bodies();
@@ -137,6 +145,9 @@ struct ContactProblem {
     if (!is_wall(j)) {
       v += u[j];
       if (rotates()) v += arm_j[c] * n.cross(u[nb + j]);
+    } else if (!wall_velocity.empty()) {
+      const Vec3 &w = wall_velocity[c];
+      v += w - n.dot(w) * n;
     }
     return v;
   }

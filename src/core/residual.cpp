@@ -28,8 +28,16 @@ double clearing_work(const ContactProblem &p, const std::vector<double> &mu, int
   double work = 0.0;
   const int nc = p.n_contacts();
   for (int c = 0; c < nc; ++c) {
-    const double m = mu[static_cast<size_t>(block) * c];
-    if (p.counted[c] && m > 0.0) work += m * std::max(0.0, -p.gap[c]);
+    const double *m = &mu[static_cast<size_t>(block) * c];
+    if (!p.counted[c] || m[0] <= 0.0) continue;
+    work += m[0] * std::max(0.0, -p.gap[c]);
+    // A wall sliding under a sphere (tangential velocity w_t) works on it through friction:
+    // its share of the affine term, -h (m_1 t_1 + m_2 t_2) . w, where that is positive.
+    if (block > 1 && !p.wall_velocity.empty() && is_wall(p.body_j[c])) {
+      const Vec3 &w = p.wall_velocity[c];
+      const double b = p.h * (m[1] * p.tangent1[c].dot(w) + m[2] * p.tangent2[c].dot(w));
+      work += std::max(0.0, -b);
+    }
   }
   return work;
 }

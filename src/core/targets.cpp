@@ -35,8 +35,8 @@ void Targets::apply(ContactProblem &p, int first_row) const
     }
     // a moving wall: g = D + h n . (u_wall - u_i), the gap to where the wall will be
     const int j = p.body_j[c];
-    const double wall_speed = wall_velocity != nullptr && is_wall(j)
-                                  ? p.normal[c].dot((*wall_velocity)[wall_index(j)])
+    const double wall_speed = !p.wall_velocity.empty() && is_wall(j)
+                                  ? p.normal[c].dot(p.wall_velocity[c])
                                   : 0.0;    // n . u_wall
     if (wall_speed != 0.0) p.gap[c] += h * wall_speed;
     if (u_start == nullptr) continue;

@@ -1,7 +1,8 @@
 // Target terms: what changes only the affine part each row must reach (the gap D of eq. 15),
 // not the set the multipliers may take. Applied in one place, to the rows of each solve round
-// before it is solved: the overlap policy today; a wall's velocity (+ h n . u_wall) and
-// restitution go here too (clamp geometric overlaps first, then add velocity terms).
+// before it is solved: the overlap policy, a moving wall's velocity (+ h n . u_wall, from
+// ContactProblem::wall_velocity) and restitution (clamp geometric overlaps first, then add
+// velocity terms).
 #pragma once
 
 #include "contact_problem.h"
@@ -19,10 +20,6 @@ struct Targets {
   const std::vector<Vec3> *u_start = nullptr;
   const std::vector<double> *restitution = nullptr;
   double bounce_vmin = 0.0;
-  // Moving obstacles, off while null: the velocity of each wall (by wall_index), which enters
-  // a wall row's target as + h n . u_wall (the gap target moves with the wall).
-  const std::vector<Vec3> *wall_velocity = nullptr;
-
   // Rows first_row.. of p, added since the last call.
   void apply(ContactProblem &p, int first_row) const;
 };

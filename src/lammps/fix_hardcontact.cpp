@@ -157,6 +157,7 @@ void FixHardContact::post_neighbor()
 void FixHardContact::setup(int)
 {
   walls_.init_positions();    // moving walls where their variables put them at this step
+  regions_.at_current_step();    // moving regions likewise
   step_.check_bodies(walls_.walls());
   regions_.check_sides();
   step_.find_overlaps(*solver_);
@@ -171,6 +172,8 @@ void FixHardContact::initial_integrate(int)
   effects.restitution = &options_.restitution;
   effects.bounce_vmin = options_.bounce_vmin;
   effects.wall_velocity = walls_.advance(update->dt);
+  regions_.advance();    // moving regions to t^{n+1}, with their velocities over the step
+  effects.moving_obstacles = regions_.moving();
   effects.cohesion = &options_.cohesion;
   if (options_.has_friction()) {
     effects.friction = &options_.friction;

@@ -209,12 +209,26 @@ inline LAMMPS_NS::Region *find_region(LAMMPS_NS::Domain *domain, const std::stri
 // Region walls follow each face of a region from step to step by the face number LAMMPS's
 // Region::surface() gives every contact (Contact::iwall). LIGGGHTS 3.8's Region::Contact has
 // no such number, so region walls are not available there (an error names the reason).
+// A moving region (LAMMPS): prematch() puts it where its variables say at this step,
+// set_velocity() differences that against the last call; velocity_contact() is the velocity
+// of the surface at contact m of the last surface() call. (Never reached on LIGGGHTS.)
 #if HARDCONTACT_LIGGGHTS
 constexpr bool kRegionFacesNumbered = false;
 inline int region_face(const LAMMPS_NS::Region::Contact &) { return 0; }
+inline void region_move_to_step(LAMMPS_NS::Region *region) { region->prematch(); }
+inline void region_contact_velocity(LAMMPS_NS::Region *, double *, double *, int) {}
 #else
 constexpr bool kRegionFacesNumbered = true;
 inline int region_face(const LAMMPS_NS::Region::Contact &contact) { return contact.iwall; }
+inline void region_move_to_step(LAMMPS_NS::Region *region)
+{
+  region->prematch();
+  region->set_velocity();
+}
+inline void region_contact_velocity(LAMMPS_NS::Region *region, double *u_wall, double *x, int m)
+{
+  region->velocity_contact(u_wall, x, m);
+}
 #endif
 
 // ------------------------------------------------------------------------- atoms, comm

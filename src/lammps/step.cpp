@@ -41,7 +41,7 @@ StepResult ContactStep::solve(Solver &solver, const SolverSettings &settings,
   block_ = effects.rolling ? 5 : effects.friction ? 3 : 1;
   const Bodies bodies = build_bodies(solver.traits().needs_owner_map, effects);
   RowSink sink(problem_, atom->tag, atom->nlocal, free_speed_);
-  sink.set_wall_velocities(effects.wall_velocity);
+  sink.set_wall_velocities(effects.wall_velocity, effects.moving_obstacles);
   sink.begin_candidates(1.0);
   offer_rows(bodies, sink);
   Targets targets{bodies.recovery_speed, free_speed_scale(problem_, ops_), settings.tol};
@@ -52,7 +52,6 @@ StepResult ContactStep::solve(Solver &solver, const SolverSettings &settings,
     pair_values_of_rows(*effects.cohesion, 0, row_f_);
     apply_cohesion(problem_, row_f_, settings.tol, ops_, pull_);
   }
-  targets.wall_velocity = effects.wall_velocity;
   if (restitution) {
     // the approach speeds at the start of the step: u^n, ghosts from their owners
     const int nlocal = atom->nlocal;

@@ -33,8 +33,10 @@ struct StepEffects {
   // speed below which contacts stay inelastic.
   const std::vector<double> *restitution = nullptr;
   double bounce_vmin = 0.0;
-  // per wall (by wall_index), null when every wall is at rest
+  // per plane wall (by wall_index), null when every plane is at rest
   const std::vector<Vec3> *wall_velocity = nullptr;
+  // some wall moves (a plane or a region): rows carry their wall's velocity
+  bool moving_obstacles = false;
   // F per type pair ((ntypes + 1)^2), empty for none (core/cohesion.h)
   const std::vector<double> *cohesion = nullptr;
   // Coulomb coefficient per type pair ((ntypes + 1)^2), null for none: the bodies rotate and

@@ -48,6 +48,9 @@ hardcontact_deck_test(NAME phys_cluster_ranks_full SCRIPT integration/test_phys_
 #               is followed below g and left above, a piston pushes without overlap
 #  region_wall  walls made of regions: cylinder, cone (hopper), bowl (inside), spherical
 #               obstacle (outside): no overlap beyond the documented bounds, resting heights
+#  moving_region  region walls that move: a plane region sliding under a sphere (friction: it
+#               spins up and rolls at 2/7 V from t* = 2 V / (7 mu g)), rising under it (carried),
+#               a rotating drum (bed dragged up, nothing leaves), restart
 #  cohesion     a sphere hangs under a ceiling iff m g < F; a touching pair pulled apart opens
 #               at F; cohesion 0 bit-identical to none
 #  friction     a sphere rolls down an incline at 5/7 g sin or slips at g (sin - mu cos), a
@@ -55,9 +58,9 @@ hardcontact_deck_test(NAME phys_cluster_ranks_full SCRIPT integration/test_phys_
 #               dissipation output, oblique pairs stick/slide at 7/2 mu, friction 0
 #               bit-identical to none, a spinning gas: energy never grows, linear and angular
 #               momentum exact, ranks agree
-foreach(_effect restitution moving_wall region_wall cohesion friction)
+foreach(_effect restitution moving_wall region_wall moving_region cohesion friction)
   set(_hosts launcher modern liggghts)
-  if(_effect STREQUAL "region_wall")
+  if(_effect MATCHES "region")
     set(_hosts launcher modern)    # LIGGGHTS 3.8 has no region walls (lammps_compat.h)
   endif()
   foreach(_np 1 2 4)

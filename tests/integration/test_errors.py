@@ -201,9 +201,11 @@ CASES = [
          setup="region small sphere 1.5 1.5 1.5 1.0 side in"),
          ["on the wrong side of wall region small"],
          liggghts=["wall region small"] + LIGGGHTS_NO_REGION_WALLS),
-    case("wall_region_moving", deck("wall region mover",
-         setup="variable dx equal 0.01*step\nregion mover block 0 6 0 6 0 6 move v_dx NULL NULL"),
-         ["wall region mover", "moving or variable-shape regions are not supported"],
+    case("wall_region_moving_union", deck("wall region mover", setup=(
+        "variable dx equal 0.01*step\nregion a block 0 6 0 6 0 6 move v_dx NULL NULL\n"
+        "region b sphere 3 3 3 1\nregion mover union 2 a b")),
+         ["wall region mover", "union of moving regions has no known surface velocity",
+          "its own 'wall region' keyword"],
          liggghts=["wall region mover"] + LIGGGHTS_NO_REGION_WALLS),
     # restitution and bounce
     case("restitution_above_one", deck("restitution 1.5"), ["restitution must be in [0, 1]"],

@@ -10,6 +10,7 @@
 #include "lammps.h"
 #include "neighbor.h"
 #include "region.h"
+#include "update.h"
 
 #include <limits>
 
@@ -35,14 +36,35 @@ void RegionWallSource::init(int first_wall)
                         "Fix hardcontact wall region {}: no region with that ID: define it "
                         "with the region command before the fix",
                         id);
-    if (region->dynamic_check())
+    // A union/intersect is never moved itself; its sub-regions may be, but the velocity of
+    // its surface is not known to LAMMPS (velocity_contact reads the union's own motion).
+    const std::string style = region->style;
+    if (region->dynamic_check() && (style == "union" || style == "intersect"))
       compat::error_all(lmp_->error, FLERR,
-                        "Fix hardcontact wall region {}: moving or variable-shape regions "
-                        "are not supported yet: use a static region, or a moving plane "
-                        "wall (wall zplane v_name ...)",
-                        id);
+                        "Fix hardcontact wall region {}: a {} of moving regions has no known "
+                        "surface velocity: give each moving region its own 'wall region' "
+                        "keyword",
+                        id, style);
+    if (region->dynamic_check()) moving_ = true;
     regions_.push_back(region);
   }
+  ahead_ = false;
+}
+
+void RegionWallSource::at_current_step()
+{
+  for (Region *region : regions_)
+    if (region->dynamic_check()) compat::region_move_to_step(region);    // seeds velocities
+  ahead_ = false;
+}
+
+void RegionWallSource::advance()
+{
+  if (!moving_) return;
+  for (Region *region : regions_)
+    if (region->dynamic_check()) compat::region_move_to_step(region);
+  ahead_ = true;
+  h_ = lmp_->update->dt;
 }
 
 // Every face of every region within the skin of an owned sphere: a sphere cannot move more
@@ -72,7 +94,14 @@ void RegionWallSource::visit(const Bodies &, RowSink &sink) const
         // delx.. points from the surface to the centre: the row's normal is the opposite
         const Vec3 normal = -Vec3(ct.delx, ct.dely, ct.delz) / ct.r;
         const int w = first_wall_ + kFacesPerRegion * k + compat::region_face(ct);
-        sink.offer(i, wall_body(w), normal, ct.r - radius[i], radius[i]);
+        if (!region->dynamic_check()) {
+          sink.offer(i, wall_body(w), normal, ct.r - radius[i], radius[i]);
+          continue;
+        }
+        Vec3 u_wall = Vec3::Zero();
+        compat::region_contact_velocity(region, u_wall.data(), x[i], m);
+        const double d = ct.r - radius[i] - (ahead_ ? h_ * normal.dot(u_wall) : 0.0);
+        sink.offer(i, wall_body(w), normal, d, radius[i], u_wall);
       }
     }
   }

@@ -27,12 +27,10 @@ void RowSink::begin_missed(const std::vector<Vec3> &u, double speed_scale, doubl
 
 // Eq. 15 at u, measured like every solved row: the scale the solve just used, so that every
 // row meets one criterion.
-bool RowSink::violated(int i, int j, const Vec3 &n, double d, double size) const
+bool RowSink::violated(int i, int j, const Vec3 &n, double d, double size,
+                       const Vec3 &u_wall) const
 {
-  Vec3 uj = Vec3::Zero();
-  if (!is_wall(j)) uj = (*u_)[j];
-  else if (wall_velocity_) uj = (*wall_velocity_)[wall_index(j)];
-  const Vec3 du = uj - (*u_)[i];
+  const Vec3 du = (is_wall(j) ? u_wall : (*u_)[j]) - (*u_)[i];
   const double g = d + p_.h * n.dot(du);
   const double scale = row_scale(size, p_.h, speed_scale_, tol_, p_.gap_roundoff);
   return row_violation(g, 0.0, scale) > tol_;

@@ -29,27 +29,38 @@ class RowSink {
   // faster than its free speed). Then u satisfies eq. 15 for every offered row.
   void begin_missed(const std::vector<Vec3> &u, double speed_scale, double tol);
 
+  // A row against a pair or a plane wall (whose velocity, if it moves, is its plane's).
   void offer(int i, int j, const Vec3 &n, double d, double size)
   {
-    const bool candidate = d <= scale_ * p_.h * (free_speed(i) + free_speed(j));
-    if (u_ == nullptr ? !candidate : candidate || !violated(i, j, n, d, size)) return;
+    offer(i, j, n, d, size,
+          is_wall(j) && plane_velocity_ ? (*plane_velocity_)[wall_index(j)] : Vec3::Zero());
+  }
+  // A row against a wall whose contact point moves at u_wall (a moving region's surface):
+  // its velocity enters both tests like a partner's, and the row keeps it (Targets, slip).
+  void offer(int i, int j, const Vec3 &n, double d, double size, const Vec3 &u_wall)
+  {
+    const double reach = free_speed(i) + (is_wall(j) ? u_wall.norm() : free_speed(j));
+    const bool candidate = d <= scale_ * p_.h * reach;
+    if (u_ == nullptr ? !candidate : candidate || !violated(i, j, n, d, size, u_wall)) return;
     // A pair held by two processes (newton off) is counted by the side of the smaller ID.
     const bool counted = is_wall(j) || j < nlocal_ || tag_[i] < tag_[j];
     p_.add_contact(i, j, n, d, size, counted);    // D < 0: see Targets
+    if (moving_) p_.wall_velocity.push_back(u_wall);
     ++added_;
   }
-  // Moving walls (null: all at rest): their velocities enter both tests like a partner's.
-  void set_wall_velocities(const std::vector<Vec3> *velocity) { wall_velocity_ = velocity; }
+  // Moving walls: plane (null: every plane at rest) holds each plane's velocity; moving: some
+  // wall (plane or region) moves, so every row records its wall's velocity.
+  void set_wall_velocities(const std::vector<Vec3> *plane, bool moving)
+  {
+    plane_velocity_ = plane;
+    moving_ = moving || plane != nullptr;
+  }
   // Rows added since the last begin_*.
   int added() const { return added_; }
 
  private:
-  double free_speed(int b) const
-  {
-    if (!is_wall(b)) return speed_[b];
-    return wall_velocity_ ? (*wall_velocity_)[wall_index(b)].norm() : 0.0;
-  }
-  bool violated(int i, int j, const Vec3 &n, double d, double size) const;
+  double free_speed(int b) const { return speed_[b]; }
+  bool violated(int i, int j, const Vec3 &n, double d, double size, const Vec3 &u_wall) const;
 
   ContactProblem &p_;
   const LAMMPS_NS::tagint *tag_;
@@ -57,7 +68,8 @@ class RowSink {
   std::vector<double> &speed_;    // |u_free| per body, from begin_candidates
   double scale_ = 1.0;
   const std::vector<Vec3> *u_ = nullptr;    // set in the missed-row pass only
-  const std::vector<Vec3> *wall_velocity_ = nullptr;
+  const std::vector<Vec3> *plane_velocity_ = nullptr;
+  bool moving_ = false;
   double speed_scale_ = 0.0;
   double tol_ = 0.0;
   int added_ = 0;
