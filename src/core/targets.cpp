@@ -15,7 +15,8 @@ namespace hardcontact {
 // Restitution: a row that was closing at the start of the step faster than bounce_vmin
 // (v = n . (u_j - u_i) at u^n, v < -vmin) and that the free motion would close within the step
 // is asked to leave with at least e |v|: D' = min(D, 0) - h e |v|, so that g >= 0 reads
-// n . (u_j - u_i)^{n+1} >= e |v| (and no overlap). Newton's law at velocity level: the rebound
+// n . (u_j - u_i)^{n+1} >= e |v| (and no overlap); against a moving wall v is relative to
+// the wall and D' gains h n . u_wall, so the rebound is relative to the wall too. Newton's law at velocity level: the rebound
 // speed is exact, the position of the impact within the step is not resolved (an error below
 // h |v| in the gap). Rows in resting contact (v ~ 0) stay inelastic. e = 0 is the paper's
 // scheme. The target is negative, so the energy test counts its work as allowed (residual.h).
@@ -38,6 +39,7 @@ void Targets::apply(ContactProblem &p, int first_row) const
     const double wall_speed = !p.wall_velocity.empty() && is_wall(j)
                                   ? p.normal[c].dot(p.wall_velocity[c])
                                   : 0.0;    // n . u_wall
+    const double geometric = p.gap[c];      // D after the overlap clamp
     if (wall_speed != 0.0) p.gap[c] += h * wall_speed;
     if (u_start == nullptr) continue;
     const double e = (*restitution)[c];
@@ -45,7 +47,9 @@ void Targets::apply(ContactProblem &p, int first_row) const
     const double v = p.normal_speed(c, *u_start) + wall_speed;
     const double v_free = p.normal_speed(c, p.u_free) + wall_speed;
     if (v >= -bounce_vmin || d + h * v_free >= 0.0) continue;
-    p.gap[c] = std::min(p.gap[c], 0.0) + h * e * v;
+    // leave the wall (or partner) at e |v| relative to it: n . (u_wall - u_i) >= e |v|, and
+    // no overlap
+    p.gap[c] = std::min(geometric, 0.0) + h * wall_speed + h * e * v;
   }
 }
 
