@@ -42,3 +42,8 @@ hardcontact_deck_test(NAME example_liggghts_settle SCRIPT integration/test_examp
 # and particle templates, another deck)
 hardcontact_deck_test(NAME example_heap SCRIPT integration/test_example_heap.py
                       NP 1 LABELS examples TIMEOUT 300 HOSTS launcher modern)
+
+# hopper3d: 600 beads (mu 0.5) settle in a conical hopper (region wall) and drain through a
+# 10 mm outlet, hard and soft: no bead leaves the cone, overlaps within tol, Beverloo-band rate
+hardcontact_deck_test(NAME example_hopper3d SCRIPT integration/test_example_hopper3d.py
+                      NP 1 LABELS examples TIMEOUT 240 HOSTS launcher modern)
