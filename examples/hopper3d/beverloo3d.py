@@ -90,6 +90,8 @@ def main():
         phi, d, m = packing_fraction(settled)
         rows = []
         for w in outlets:
+            if not os.path.exists(os.path.join(out, "%s_D%g" % (kind, w), "log.lammps")):
+                continue    # not run (yet)
             q, left, win = rate(os.path.join(out, "%s_D%g" % (kind, w)))
             rows.append((w * 1e-3, q, q * m, left >= MIN_OUT, win))
         flowing = [r for r in rows if r[3]]
