@@ -28,9 +28,10 @@ void RowSink::begin_missed(const std::vector<Vec3> &u, double speed_scale, doubl
 // Eq. 15 at u, measured like every solved row: the scale the solve just used, so that every
 // row meets one criterion.
 bool RowSink::violated(int i, int j, const Vec3 &n, double d, double size,
-                       const Vec3 &u_wall) const
+                       const Vec3 *u_wall) const
 {
-  const Vec3 du = (is_wall(j) ? u_wall : (*u_)[j]) - (*u_)[i];
+  const Vec3 uj = !is_wall(j) ? (*u_)[j] : u_wall ? *u_wall : Vec3::Zero();
+  const Vec3 du = uj - (*u_)[i];
   const double g = d + p_.h * n.dot(du);
   const double scale = row_scale(size, p_.h, speed_scale_, tol_, p_.gap_roundoff);
   return row_violation(g, 0.0, scale) > tol_;

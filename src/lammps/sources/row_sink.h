@@ -32,21 +32,14 @@ class RowSink {
   // A row against a pair or a plane wall (whose velocity, if it moves, is its plane's).
   void offer(int i, int j, const Vec3 &n, double d, double size)
   {
-    offer(i, j, n, d, size,
-          is_wall(j) && plane_velocity_ ? (*plane_velocity_)[wall_index(j)] : Vec3::Zero());
+    offer_row(i, j, n, d, size,
+              is_wall(j) && plane_velocity_ ? &(*plane_velocity_)[wall_index(j)] : nullptr);
   }
   // A row against a wall whose contact point moves at u_wall (a moving region's surface):
   // its velocity enters both tests like a partner's, and the row keeps it (Targets, slip).
   void offer(int i, int j, const Vec3 &n, double d, double size, const Vec3 &u_wall)
   {
-    const double reach = free_speed(i) + (is_wall(j) ? u_wall.norm() : free_speed(j));
-    const bool candidate = d <= scale_ * p_.h * reach;
-    if (u_ == nullptr ? !candidate : candidate || !violated(i, j, n, d, size, u_wall)) return;
-    // A pair held by two processes (newton off) is counted by the side of the smaller ID.
-    const bool counted = is_wall(j) || j < nlocal_ || tag_[i] < tag_[j];
-    p_.add_contact(i, j, n, d, size, counted);    // D < 0: see Targets
-    if (moving_) p_.wall_velocity.push_back(u_wall);
-    ++added_;
+    offer_row(i, j, n, d, size, &u_wall);
   }
   // Moving walls: plane (null: every plane at rest) holds each plane's velocity; moving: some
   // wall (plane or region) moves, so every row records its wall's velocity.
@@ -59,8 +52,19 @@ class RowSink {
   int added() const { return added_; }
 
  private:
-  double free_speed(int b) const { return speed_[b]; }
-  bool violated(int i, int j, const Vec3 &n, double d, double size, const Vec3 &u_wall) const;
+  // u_wall: the wall's velocity at the contact, null for a pair or a wall at rest
+  void offer_row(int i, int j, const Vec3 &n, double d, double size, const Vec3 *u_wall)
+  {
+    const double reach = speed_[i] + (!is_wall(j) ? speed_[j] : u_wall ? u_wall->norm() : 0.0);
+    const bool candidate = d <= scale_ * p_.h * reach;
+    if (u_ == nullptr ? !candidate : candidate || !violated(i, j, n, d, size, u_wall)) return;
+    // A pair held by two processes (newton off) is counted by the side of the smaller ID.
+    const bool counted = is_wall(j) || j < nlocal_ || tag_[i] < tag_[j];
+    p_.add_contact(i, j, n, d, size, counted);    // D < 0: see Targets
+    if (moving_) p_.wall_velocity.push_back(u_wall ? *u_wall : Vec3::Zero());
+    ++added_;
+  }
+  bool violated(int i, int j, const Vec3 &n, double d, double size, const Vec3 *u_wall) const;
 
   ContactProblem &p_;
   const LAMMPS_NS::tagint *tag_;
