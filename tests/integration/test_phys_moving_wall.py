@@ -6,8 +6,10 @@ overlaps where the wall will be.
 1. Lift: a floor rising at V = 0.5 under g = 1 carries a resting sphere: z = z_floor + r and
    vz = V at every step (to 1e-9).
 2. Vibrated floor z_f = A sin(2 pi t / T): with A (2 pi / T)^2 < g the sphere follows the floor
-   (|gap| <= 1e-6 at every step); with A (2 pi / T)^2 > g it leaves it (gap > 0.1 at some step)
-   and never overlaps it.
+   (|gap| <= 1e-6 at every step), with restitution e = 0.5 too when `bounce 0.01` keeps
+   resting contact inelastic (without it the floor's change of speed in a step, A w^2 h, is an
+   approach speed that e turns into hops of a few 1e-3); with A (2 pi / T)^2 > g it leaves it (gap > 0.1 at some step) and never
+   overlaps it, and with e = 0.5 it flies higher than with e = 0.
 3. Piston: a ceiling coming down at V onto three spheres resting apart, no gravity: nothing
    moves until it arrives; then the top sphere moves down with it at V (z = z_c - r), the
    others stay; never an overlap with the ceiling or between spheres.
@@ -79,23 +81,35 @@ def test():
              "<= %.3g)" % float(np.abs(gap).max()))
     lr.check(float(np.abs(vz[1:] - V).max()) <= 1e-9, "lift: and moves with it at V = %g" % V)
 
-    # 2. vibrated floor
+    # 2. vibrated floor (and, above g, with restitution: it bounces higher than inelastic)
     T = 1.0
-    for A, follows in ((0.02, True), (0.1, False)):
+    flights = {}
+    for A, follows, e in ((0.02, True, 0.0), (0.02, True, 0.5), (0.1, False, 0.0),
+                          (0.1, False, 0.5)):
         accel = A * (2 * math.pi / T) ** 2
         deck = "variable        zf equal %r*sin(2*PI*step*dt/%r)\n" % (A, T) + LIFT.format(
-            x=0.0, y=0.0, z=0.5, fix_extra="", h=0.001, n=3000, output=OUTPUT)
-        res = lr.run_deck(args.lmp, deck, args.np, "%s/vibrated_%g" % (args.workdir, A),
+            x=0.0, y=0.0, z=0.5, fix_extra="restitution %g bounce 0.01" % e if e else "", h=0.001,
+            n=3000,
+            output=OUTPUT)
+        res = lr.run_deck(args.lmp, deck, args.np, "%s/vibrated_%g_e%g" % (args.workdir, A, e),
                           timeout=args.timeout)
         gap = res.thermo[-1]["v_gap"]
         lr.check(float(gap.min()) >= -1e-6, "vibrated floor A w^2 = %.3g g: never an overlap "
                  "(%.3g)" % (accel, float(gap.min())))
         if follows:
-            lr.check(float(np.abs(gap).max()) <= 1e-6, "vibrated floor A w^2 = %.3g g < g: the "
-                     "sphere follows it (|gap| <= %.3g)" % (accel, float(np.abs(gap).max())))
+            # the floor starts at its top speed A w: with e > 0 the sphere hops once (by about
+            # (e A w)^2 / 2g), lands and then follows
+            late = gap[1000:] if e else gap
+            lr.check(float(np.abs(late).max()) <= 1e-6, "vibrated floor A w^2 = %.3g g < g, e = "
+                     "%g: the sphere follows it (|gap| <= %.3g%s)"
+                     % (accel, e, float(np.abs(late).max()), " after t = 1" if e else ""))
         else:
-            lr.check(float(gap.max()) > 0.1, "vibrated floor A w^2 = %.3g g > g: the sphere "
-                     "leaves it (largest gap %.3g)" % (accel, float(gap.max())))
+            lr.check(float(gap.max()) > 0.1, "vibrated floor A w^2 = %.3g g > g, e = %g: the "
+                     "sphere leaves it (largest gap %.3g)" % (accel, e, float(gap.max())))
+            flights[e] = float(gap.max())
+    lr.check(flights[0.5] > 1.5 * flights[0.0],
+             "vibrated floor above g: with e = 0.5 the sphere bounces higher than inelastic "
+             "(largest gap %.3g vs %.3g)" % (flights[0.5], flights[0.0]))
 
     # 3. piston, stopped before the column jams (ceiling at 3.2 > 3 diameters)
     v, h = 0.5, 0.01
