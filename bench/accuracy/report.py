@@ -501,7 +501,37 @@ def build_doc(res, figdir_rel, meta, matrix, soft, scenes, slide, figs):
           "impact grains slide several diameters per step and the gap is of the order of the "
           "grain size.")
         w("")
+    friction_section(res, w)
     return L, summary_at
+
+
+def friction_section(res, w):
+    """Friction and rolling resistance on a 3D pile, from bench/run_friction_tol.sh (a run of
+    its own: friction_tol.csv), when present."""
+    rows = read(res / "friction_tol.csv")
+    if not rows:
+        return
+    base = {r["tol"]: r["loop_s"] for r in rows if r["case"] == "frictionless"}
+    spheres, steps = rows[0]["spheres"], rows[0]["steps"]
+    w("## Friction and rolling resistance: what accuracy costs on a 3D pile")
+    w("")
+    w("`bench/run_friction_tol.sh` (a run of its own, not part of the matrix above): the settling "
+      "3D pile of `bench/compare/in.pile3d` (%d polydisperse spheres, d 0.8-1.0, h = 0.02, %d steps, "
+      "walled box), apgd with warm start, frictionless, `friction 0.5` and `friction 0.5 rolling "
+      "0.1`, each tolerance against the same case at tol 1e-8. Position error: distance of each "
+      "sphere's final position to the reference's, in mean diameters (a settling pile amplifies "
+      "any difference, so this is an upper bound on what the tolerance alone does). Loop times "
+      "on one core, the 1-minute load at the end of each run in the last column."
+      % (spheres, steps))
+    w("")
+    w("| case | tol | loop (s) | time / frictionless | iterations per step (max) | overlap / size at the end | position error RMS (max), d | load |")
+    w("|---|---|---|---|---|---|---|---|")
+    for r in rows:
+        ratio = r["loop_s"] / base[r["tol"]] if base.get(r["tol"]) else float("nan")
+        w("| %s | %g | %.2f | %.1f | %.1f (%d) | %.2g | %.2g (%.2g) | %s |" % (
+            r["case"].replace("_", " "), r["tol"], r["loop_s"], ratio, r["iterations_per_step"],
+            r["max_iterations"], r["end_overlap"], r["rms_error_d"], r["max_error_d"], r["load1"]))
+    w("")
 
 
 def summary(matrix, soft, scenes, tols):
