@@ -169,6 +169,28 @@ class DualOperator {
       return p.h * p.h * d;
     }
   }
+  // The diagonal of the block A_cc, d[0..B): the normal entry h^2 (w_i + w_j), the two
+  // tangential ones h^2 sum (w + a^2 / I) (equal: the block is diagonal with friction,
+  // block_diagonal), and with rolling the two rolling ones h^2 R^2 (1/I_i + 1/I_j) (the
+  // block couples these with the tangential ones; the diagonal ignores it).
+  template <int B>
+  void block_diagonals(int c, double *d) const
+  {
+    const ContactProblem &p = *p_;
+    const int i = p.body_i[c], j = p.body_j[c];
+    const bool wall = is_wall(j);
+    const double h2 = p.h * p.h;
+    d[0] = h2 * (p.inv_mass[i] + (wall ? 0.0 : p.inv_mass[j]));
+    if constexpr (B > 1) {
+      double t = p.inv_mass[i] + p.inv_inertia[i] * p.arm_i[c] * p.arm_i[c];
+      if (!wall) t += p.inv_mass[j] + p.inv_inertia[j] * p.arm_j[c] * p.arm_j[c];
+      d[1] = d[2] = h2 * t;
+    }
+    if constexpr (B == 5) {
+      const double r = p.rolling_radius(c);
+      d[3] = d[4] = h2 * r * r * (p.inv_inertia[i] + (wall ? 0.0 : p.inv_inertia[j]));
+    }
+  }
   // Gershgorin: the off-diagonal entries of row c are h^2 w_k n_c.n_d for rows d sharing body
   // k, so |A_cc| + sum |A_cd| <= h^2 (w_i deg_i + w_j deg_j) with deg_k the rows touching k.
   // With friction each of the B components of a row meets B of every row d on body k, each

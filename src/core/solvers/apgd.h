@@ -25,7 +25,13 @@ class ApgdSolver : public IterativeSolver<Law> {
   void gaps(const std::vector<double> &m, std::vector<double> &g, std::vector<Vec3> &u);
   void restart(const std::vector<double> &mu);
 
-  double L_ = 0.0;        // Lipschitz estimate of grad phi
+  double L_ = 0.0;        // Lipschitz estimate of grad phi (friction: in x = D^1/2 mu)
+  // The reported step: 1/L, with friction that of the stiffest component, 1 / (L max D)
+  double report_rho() const
+  {
+    const double l = B == 1 ? L_ : L_ * dmax_;
+    return l > 0.0 ? 1.0 / l : 0.0;
+  }
   double theta_ = 1.0;    // Nesterov's sequence
   double residual_ = 0.0;          // the set's residual at the iterate, from step()'s last pass
   bool residual_ready_ = false;
@@ -34,6 +40,12 @@ class ApgdSolver : public IterativeSolver<Law> {
   // b + the shift (friction) of row c's normal component
   double linear(int c, int k) const;
 
+  // Friction (B > 1): the diagonal preconditioner D = diag(A_cc) per component (d_) and its
+  // square root (sd_), and each row's law coefficients in the variables x = D^1/2 mu (kd_).
+  void precondition(const SolverSettings &s);
+  std::vector<double> d_, sd_;
+  std::vector<Coefficients> kd_;
+  double dmax_ = 0.0;
   std::vector<double> b_;       // g at mu = 0 without shifts: the linear term of the dual
   std::vector<double> y_;       // extrapolated point
   std::vector<double> gy_;      // g at y (g is affine in mu, so no extra product)
