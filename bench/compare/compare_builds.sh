@@ -16,7 +16,7 @@ command -v valgrind >/dev/null || { echo "valgrind is needed (apt-get install va
 WORK="${BENCH_WORKDIR:-$ROOT/bench/work}/compare"
 mkdir -p "$WORK"; cd "$WORK"
 EXTRA="${COMPARE_EXTRA:-}"
-sed "s/wall zplane 0 NULL\$/wall zplane 0 NULL $EXTRA/" "$HERE/in.pile3d" > in.pile3d
+sed "s/hardcontact solver \${solver} wall/hardcontact solver \${solver} $EXTRA wall/" "$HERE/in.pile3d" > in.pile3d
 thermo() { awk '/^ *Step/{f=1;next} /^Loop/{f=0} f' "$1"; }
 count() { sed -n 's/.*Collected : \([0-9]*\).*/\1/p' "$1"; }
 echo "solver  steps  old_instructions  new_instructions  new/old  thermo"
