@@ -9,7 +9,7 @@ Checked:
   * hard: no bead centre ever outside the cone region and none in the floor layer away from the
     outlet (thermo v_outside, v_through = 0 at every output); in every dump frame each bead is
     clear of the cone's surface by its radius (within 2 tol) and every bead centre in the floor
-    layer is within D/2 of the axis; the frozen floor spheres never move;
+    layer is within the hole (D/2 + 0.5 mm) of the axis; the frozen floor spheres never move;
   * hard: no solve stopped at maxiter; the largest overlap (f_hc[7]) <= 2 tol at every output;
   * hard: energy: at the end of the settling the kinetic + potential energy is below the
     potential energy at the start (gravity's work is dissipated, never created); friction
@@ -88,8 +88,12 @@ def check_geometry(frames, name):
                 moved = max(moved, abs(xx - x0[0]), abs(yy - x0[1]), abs(zz - x0[2]))
     lr.check(worst >= -2 * TOL, "%s: every bead clear of the cone wall by its radius (smallest "
              "clearance %.3g of the radius)" % (name, worst))
-    lr.check(below_out <= 0.5 * D, "%s: beads cross the floor only in the outlet (largest "
-             "distance from the axis %.2f mm <= D/2)" % (name, below_out * 1e3))
+    # the hole cut in the frozen floor has radius D/2 + 0.5 mm; its rim is ragged (1 mm spheres),
+    # so a bead passing it may have its centre a little beyond D/2 without touching anything,
+    # but not beyond the hole: there the floor spheres leave no room
+    lr.check(below_out <= 0.5 * D + 0.0005, "%s: beads cross the floor only in the outlet "
+             "(largest distance from the axis %.2f mm <= D/2 + 0.5 mm, the hole)"
+             % (name, below_out * 1e3))
     return moved
 
 
