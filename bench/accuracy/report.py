@@ -532,6 +532,17 @@ def friction_section(res, w):
             r["case"].replace("_", " "), r["tol"], r["loop_s"], ratio, r["iterations_per_step"],
             r["max_iterations"], r["end_overlap"], r["rms_error_d"], r["max_error_d"], r["load1"]))
     w("")
+    for case in ("friction_0.5", "friction_0.5_rolling_0.1"):
+        sel = [r for r in rows if r["case"] == case and base.get(r["tol"])]
+        if not sel:
+            continue
+        ratios = [r["loop_s"] / base[r["tol"]] for r in sel]
+        w("- %s costs %.1f-%.1f x the frictionless time over tol %g..%g (%.0f-%.0f iterations "
+          "per step); the position error falls with the tolerance as without friction." % (
+              case.replace("_", " "), min(ratios), max(ratios), max(r["tol"] for r in sel),
+              min(r["tol"] for r in sel), min(r["iterations_per_step"] for r in sel),
+              max(r["iterations_per_step"] for r in sel)))
+    w("")
 
 
 def summary(matrix, soft, scenes, tols):
