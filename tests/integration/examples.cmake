@@ -47,3 +47,9 @@ hardcontact_deck_test(NAME example_heap SCRIPT integration/test_example_heap.py
 # 10 mm outlet, hard and soft: no bead leaves the cone, overlaps within tol, Beverloo-band rate
 hardcontact_deck_test(NAME example_hopper3d SCRIPT integration/test_example_hopper3d.py
                       NP 1 LABELS examples TIMEOUT 240 HOSTS launcher modern)
+
+# drum: 120 spheres in a drum rotating at Froude number 0.01 (0.11 revolution): the bed stays in
+# the drum and is dragged up the rising side, its surface tilts; soft twin; the decks differ only
+# in their contact block (LAMMPS hosts: LIGGGHTS has no region walls)
+hardcontact_deck_test(NAME example_drum SCRIPT integration/test_example_drum.py
+                      NP 1 LABELS examples TIMEOUT 300 HOSTS launcher modern)
