@@ -58,13 +58,12 @@ def main():
         label, files = arg.split("=", 1)
         dump, log = files.split(":", 1)
         runs.append((label, dump, log))
-    fig = plt.figure(figsize=(3.0 * len(runs), 5.6))
+    fig = plt.figure(figsize=(3.2 * len(runs) + 0.8, 5.6))
     grid = fig.add_gridspec(2, len(runs), height_ratios=[3, 2])
-    circles = None
-    for k, (label, dump, log) in enumerate(runs):
-        circles = side_view(fig.add_subplot(grid[0, k]), label, dump, log)
-    fig.colorbar(circles, ax=fig.axes, shrink=0.5, location="top",
-                 label="speed / (omega R)")
+    views = [fig.add_subplot(grid[0, k]) for k in range(len(runs))]
+    for ax, (label, dump, log) in zip(views, runs):
+        circles = side_view(ax, label, dump, log)
+    fig.colorbar(circles, ax=views, shrink=0.8, location="right", label="speed / (omega R)")
     ax = fig.add_subplot(grid[1, :])
     for label, dump, log in runs:
         sc = drum_angle.read_scene(log)
@@ -72,7 +71,8 @@ def main():
         t = np.array([s[0] for s in res["series"] if s[1] is not None])
         a = np.array([s[1] for s in res["series"] if s[1] is not None])
         rev = (t - sc["tset"]) * sc["omega"] / (2.0 * math.pi)
-        ax.plot(rev, a, ".-", label="%s: %.1f +- %.1f deg" % (label, res["angle"], res["angle_std"]))
+        ax.plot(rev, a, ".-",
+                label="%s: %.1f +- %.1f deg" % (label, res["angle"], res["angle_std"]))
     ax.set_xlabel("revolutions")
     ax.set_ylabel("surface angle (deg)")
     ax.axhline(0.0, color="0.7", linewidth=0.5)

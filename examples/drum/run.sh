@@ -25,7 +25,7 @@ run_one() {    # run_one DIR LAUNCHER DECK LABEL [LAMMPS arguments...]
 }
 if [ "$WHICH" != soft ]; then
   if [ -n "${HARD_DT:-}" ]; then
-    for h in $HARD_DT; do run_one "hard_dt$h" "$LMP" in.drum "hard h=$h" -var dt "$h"; done
+    for h in $HARD_DT; do run_one "hard_dt$h" "$LMP" in.drum "hard (h $h)" -var dt "$h"; done
   else
     run_one hard "$LMP" in.drum "hard"
   fi
