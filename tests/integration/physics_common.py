@@ -25,6 +25,16 @@ boundary        f f f
 atom_modify     map array
 """
 
+# The same over a floor: periodic in x and y, ghost velocities for friction and moving walls.
+HEADER_3D_FLOOR = """
+units           lj
+atom_style      sphere
+dimension       3
+boundary        p p f
+atom_modify     map array
+comm_modify     vel yes
+"""
+
 
 # One sphere of diameter 1 above a floor at z = 0 (periodic in x, y) under g = 1: format with
 # x, y, z (centre), fix_extra (keywords after the wall), h, and the output and run lines.

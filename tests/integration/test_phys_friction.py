@@ -47,14 +47,7 @@ import scene_data as sd
 
 H = 0.01
 
-INCLINE = """
-units           lj
-atom_style      sphere
-dimension       3
-boundary        p p f
-atom_modify     map array
-comm_modify     vel yes
-region          box block -30 30 -2 2 0 6
+INCLINE = pc.HEADER_3D_FLOOR + """region          box block -30 30 -2 2 0 6
 create_box      1 box
 create_atoms    1 single {x0} 0 0.5
 set             atom 1 diameter 1.0 density 1.0

@@ -26,19 +26,13 @@ import math
 import numpy as np
 
 import lammps_run as lr
+import physics_common as pc
 
 H = 0.01
 MU = 0.3
 V = 2.0
 
-CONVEYOR = """
-units           lj
-atom_style      sphere
-dimension       3
-boundary        p p f
-atom_modify     map array
-comm_modify     vel yes
-region          box block -30 30 -2 2 -1 40
+CONVEYOR = pc.HEADER_3D_FLOOR + """region          box block -30 30 -2 2 -1 40
 create_box      1 box
 create_atoms    1 single -2 0 0.5
 set             atom 1 diameter 1.0 density 1.0

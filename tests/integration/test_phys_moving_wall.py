@@ -173,14 +173,7 @@ def packing_deck():
     return PACKING.format(atoms="\n".join(lines))
 
 
-PACKING = """
-units           lj
-atom_style      sphere
-dimension       3
-boundary        p p f
-atom_modify     map array
-comm_modify     vel yes
-region          box block 0 5 0 5 0 15 units box
+PACKING = pc.HEADER_3D_FLOOR + """region          box block 0 5 0 5 0 15 units box
 create_box      1 box
 {atoms}
 set             group all diameter 1.0 density 1.0
