@@ -9,6 +9,7 @@
 
 #include <Eigen/SparseCore>
 
+#include <algorithm>
 #include <vector>
 
 namespace hardcontact {
@@ -57,6 +58,22 @@ class DualOperator {
       if (nonzero<B>(m)) apply_block<B>(c, m, u);
     }
     forward(u);
+  }
+  // w = h M^-1 G^T m over the listed rows, from rest (no u_free): the velocity change of the
+  // impulses m alone, so that h G_c w is A m (Krylov solvers). Ghosts from their owners.
+  template <class MOf>
+  void impulse_velocities_with(const std::vector<int> &rows, MOf &&m_of, std::vector<Vec3> &w) const
+  {
+    const ContactProblem &p = *p_;
+    w.resize(p.n_dof());
+    std::fill(w.begin(), w.begin() + p.n_owned, Vec3::Zero());
+    if (p.rotates())
+      std::fill(w.begin() + p.n_bodies(), w.begin() + p.n_bodies() + p.n_owned, Vec3::Zero());
+    for (const int c : rows) {
+      const double m = m_of(c);
+      if (m != 0.0) apply(c, m, w);
+    }
+    forward(w);
   }
   // u = u_free (mu = 0).
   void free_velocities(std::vector<Vec3> &u) const

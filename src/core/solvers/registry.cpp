@@ -2,6 +2,7 @@
 #include "../solver.h"
 #include "apgd.h"
 #include "exact.h"
+#include "projected_cg.h"
 #include "pgs.h"
 #include "uzawa.h"
 
@@ -24,6 +25,7 @@ const Entry registry[] = {
     {"pgs", [] { return std::unique_ptr<Solver>(new Pgs()); },
      [] { return std::unique_ptr<Solver>(new PgsFriction()); },
      [] { return std::unique_ptr<Solver>(new PgsRolling()); }},
+    {"cg", [] { return std::unique_ptr<Solver>(new ProjectedCg()); }, nullptr, nullptr},
     {"exact", [] { return std::unique_ptr<Solver>(new Exact()); }, nullptr, nullptr},
 };
 }    // namespace

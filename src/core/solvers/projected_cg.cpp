@@ -1,0 +1,231 @@
+#include "projected_cg.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace hardcontact {
+
+// Notation (projected_cg.h): g = A mu + b is the gap of u(mu) (eq. 15, the dual's gradient),
+// d = diag A. CG with the preconditioner D^-1: dir = D^-1 g - gamma dir on free rows, gamma =
+// (D^-1 g_new).A dir / dir.A dir (A-conjugate to the last direction, the form that needs no
+// old residual), step alpha = g.dir / dir.A dir along -dir (exact line search). Every sum runs
+// over counted rows (a row held by two processes counts once) and is reduced over all
+// processes; every per-row value is computed from forwarded velocities and reduced scalars,
+// so two processes holding the same row compute the same multiplier: momentum stays exact.
+
+void ProjectedCg::start(const SolverSettings &, std::vector<double> &mu, std::vector<Vec3> &u)
+{
+  const ContactProblem &p = op_.problem();
+  const int nc = p.n_contacts();
+  d_.resize(nc);
+  for (int c = 0; c < nc; ++c) {
+    const double d = op_.diagonal(c);
+    d_[c] = d > 0.0 ? d : 1.0;    // a row no body can move: any scale
+  }
+  for (auto *v : {&dir_, &q_, &clip_, &qc_}) v->assign(nc, 0.0);
+  near_mark_.assign(nc, 0);
+  wc_.assign(p.n_dof(), Vec3::Zero());
+  op_.velocities<1>(set_.rows(), mu, u);
+  for (const int c : set_.rows()) g_[c] = op_.gap(c, u);
+  index_rows();
+  refresh(mu);
+  cg_ = false;
+  rho_ = 0.0;
+}
+
+void ProjectedCg::grown(const SolverSettings &, std::vector<double> &mu, std::vector<Vec3> &u)
+{
+  // new rows hold mu = 0 and u is unchanged: their gaps, and everyone's again from u (the
+  // recurrence of g resynchronised); CG starts again on the larger set
+  for (const int c : set_.rows()) g_[c] = op_.gap(c, u);
+  index_rows();
+  refresh(mu);
+  cg_ = false;
+}
+
+double ProjectedCg::set_residual(const std::vector<double> &, const std::vector<Vec3> &)
+{
+  return residual_;
+}
+
+void ProjectedCg::index_rows()
+{
+  const ContactProblem &p = op_.problem();
+  const int nb = p.n_bodies();
+  row_start_.assign(nb + 1, 0);
+  for (const int c : set_.rows()) {
+    ++row_start_[p.body_i[c] + 1];
+    if (!is_wall(p.body_j[c])) ++row_start_[p.body_j[c] + 1];
+  }
+  for (int b = 0; b < nb; ++b) row_start_[b + 1] += row_start_[b];
+  row_list_.resize(row_start_[nb]);
+  std::vector<int> &at = touched_;    // scratch: the next free place per body
+  at.assign(row_start_.begin(), row_start_.end() - 1);
+  for (const int c : set_.rows()) {
+    row_list_[at[p.body_i[c]]++] = c;
+    if (!is_wall(p.body_j[c])) row_list_[at[p.body_j[c]]++] = c;
+  }
+  touched_.clear();
+}
+
+void ProjectedCg::refresh(const std::vector<double> &mu)
+{
+  const ContactProblem &p = op_.problem();
+  double r = 0.0, num = 0.0;
+  for (const int c : set_.rows()) {
+    r = std::max(r, set_.violation(c, &g_[c], &mu[c], Coefficients{}));
+    if (p.counted[c] && free(c, mu)) num += g_[c] / d_[c] * q_[c];
+  }
+  residual_ = r;
+  gamma_num_ = op_.ops().sum_all(num);
+}
+
+double ProjectedCg::product(const std::vector<double> &mu, double gamma)
+{
+  const ContactProblem &p = op_.problem();
+  const std::vector<int> &rows = set_.rows();
+  op_.impulse_velocities_with(
+      rows,
+      [&](int c) {
+        dir_[c] = free(c, mu) ? g_[c] / d_[c] - gamma * dir_[c] : 0.0;
+        return dir_[c];
+      },
+      w_);
+  double s[2] = {0.0, 0.0};
+  double ratio = 0.0;
+  for (const int c : rows) {
+    const double m = dir_[c];
+    q_[c] = p.h * p.normal_speed(c, w_);
+    // a row at 0 the direction would lower (an overlapping row joined with the old
+    // direction's share): no step keeps it feasible
+    if (m > 0.0)
+      ratio = mu[c] > 0.0 ? std::max(ratio, m / mu[c]) : std::numeric_limits<double>::infinity();
+    if (!p.counted[c]) continue;
+    s[0] += g_[c] * m;
+    s[1] += m * q_[c];
+  }
+  op_.ops().sum_all(s, 2);
+  sums_[0] = s[0];
+  sums_[1] = s[1];
+  return op_.ops().max_all(ratio);
+}
+
+void ProjectedCg::move(double a, std::vector<double> &mu, std::vector<Vec3> &u)
+{
+  for (const int c : set_.rows()) {
+    mu[c] -= a * dir_[c];
+    g_[c] -= a * q_[c];
+  }
+  const size_t n = w_.size();
+  for (size_t b = 0; b < n; ++b) u[b] -= a * w_[b];
+}
+
+// move() and refresh() in one pass over the rows (the CG step's common case)
+void ProjectedCg::move_and_refresh(double a, std::vector<double> &mu, std::vector<Vec3> &u)
+{
+  const ContactProblem &p = op_.problem();
+  double r = 0.0, num = 0.0;
+  for (const int c : set_.rows()) {
+    mu[c] -= a * dir_[c];
+    g_[c] -= a * q_[c];
+    r = std::max(r, set_.violation(c, &g_[c], &mu[c], Coefficients{}));
+    if (p.counted[c] && free(c, mu)) num += g_[c] / d_[c] * q_[c];
+  }
+  const size_t n = w_.size();
+  for (size_t b = 0; b < n; ++b) u[b] -= a * w_[b];
+  residual_ = r;
+  gamma_num_ = op_.ops().sum_all(num);
+}
+
+// mu - a dir + clip with clip_c = a dir_c - mu_c on the rows that would go below 0 (they land
+// on 0 exactly); u and g follow from w_, q_ and the clip's own velocity change, which touches
+// only the bodies of clipped rows and, through them, the rows sharing those bodies. phi changes
+// by g.delta + 1/2 delta.A delta with delta = -a dir + clip:
+//   -a g.dir + a^2/2 dir.A dir + clip.(g - a q) + 1/2 clip.A clip.
+bool ProjectedCg::projected_step(double a, double floor, std::vector<double> &mu,
+                                 std::vector<Vec3> &u)
+{
+  const ContactProblem &p = op_.problem();
+  clipped_.clear();
+  for (const int c : set_.rows())
+    if (dir_[c] > 0.0 && mu[c] - a * dir_[c] < 0.0) {
+      clip_[c] = a * dir_[c] - mu[c];
+      clipped_.push_back(c);
+      op_.apply(c, clip_[c], wc_);
+    }
+  op_.forward(wc_);
+  // bodies the clip moved: owned ones from the clipped rows here, ghosts from their owners
+  touched_.clear();
+  const int nb = p.n_bodies();
+  for (int b = 0; b < nb; ++b)
+    if (wc_[b][0] != 0.0 || wc_[b][1] != 0.0 || wc_[b][2] != 0.0) touched_.push_back(b);
+  near_.clear();
+  for (const int b : touched_)
+    for (int k = row_start_[b]; k < row_start_[b + 1]; ++k) {
+      const int c = row_list_[k];
+      if (near_mark_[c]) continue;
+      near_mark_[c] = 1;
+      near_.push_back(c);
+      qc_[c] = p.h * p.normal_speed(c, wc_);
+    }
+  double s = 0.0;
+  for (const int c : clipped_)
+    if (p.counted[c]) s += clip_[c] * (g_[c] - a * q_[c] + 0.5 * qc_[c]);
+  const double change = -a * sums_[0] + 0.5 * a * a * sums_[1] + op_.ops().sum_all(s);
+  const bool take = change <= floor;
+  if (take) {
+    move(a, mu, u);
+    for (const int c : clipped_) mu[c] = 0.0;    // exactly, not a round-off away
+    for (const int c : near_) g_[c] += qc_[c];
+    for (const int b : touched_) u[b] += wc_[b];
+  }
+  for (const int c : clipped_) clip_[c] = 0.0;
+  for (const int c : near_) {
+    near_mark_[c] = 0;
+    qc_[c] = 0.0;
+  }
+  for (const int b : touched_) wc_[b] = Vec3::Zero();
+  return take;
+}
+
+bool ProjectedCg::step(const SolverSettings &, std::vector<double> &mu, std::vector<Vec3> &u)
+{
+  double ratio = product(mu, cg_ && pq_ > 0.0 ? gamma_num_ / pq_ : 0.0);
+  if (!(sums_[0] > 0.0) && cg_) {
+    // the conjugate direction no longer descends (the free rows changed under it): start
+    // again from the preconditioned gradient
+    cg_ = false;
+    ratio = product(mu, 0.0);
+  }
+  if (!(sums_[0] > 0.0)) return false;    // no descent left on the free rows: nothing to do
+  const double feasible = ratio > 0.0 ? 1.0 / ratio : std::numeric_limits<double>::infinity();
+  // phi is convex: along -dir it is a parabola, or a line where dir.A dir = 0 (redundant
+  // rows), which the bound stops
+  const double alpha = sums_[1] > 0.0 ? sums_[0] / sums_[1] : feasible;
+  if (!std::isfinite(alpha)) return false;    // unbounded: eq. 15 has no solution
+  if (alpha <= feasible) {
+    move_and_refresh(alpha, mu, u);
+    pq_ = sums_[1];
+    cg_ = true;
+    return true;
+  }
+  // Forces would go below 0: the projected step, if it does at least as well as stopping at
+  // the first bound; conjugacy is kept (the rows that stopped leave the free set)
+  const double to_bound = -feasible * sums_[0] + 0.5 * feasible * feasible * sums_[1];
+  if (projected_step(alpha, to_bound, mu, u)) {
+    pq_ = sums_[1];
+    refresh(mu);
+    cg_ = true;
+    return true;
+  }
+  // the step to the first bound, and CG again from the gradient
+  move(feasible, mu, u);
+  for (const int c : set_.rows())
+    if (dir_[c] > 0.0 && mu[c] <= 1e-12 * dir_[c] * feasible) mu[c] = 0.0;
+  refresh(mu);
+  cg_ = false;
+  return true;
+}
+
+}    // namespace hardcontact
