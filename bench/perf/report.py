@@ -13,8 +13,12 @@ import matplotlib.pyplot as plt  # noqa: E402
 import matplotlib.ticker  # noqa: E402
 import numpy as np  # noqa: E402
 
-SOLVERS = ["apgd", "pgs", "uzawa", "exact"]
-COLORS = dict(apgd="C0", pgs="C1", uzawa="C2", exact="C3", soft="C4")
+# REF: the default frictionless solver, the reference of every series (bench/perf/run.py)
+REF = "cg"
+SOLVERS = ["cg", "apgd", "pgs", "uzawa", "exact"]
+COLORS = dict(cg="C6", apgd="C0", pgs="C1", uzawa="C2", exact="C3", soft="C4")
+# Kept from the existing doc: everything after this line (hand-written sections)
+KEEP_MARK = "<!-- report.py keeps everything below this line: hand-written sections -->"
 
 
 def num(x):
@@ -139,32 +143,46 @@ class Report:
                "tol 1e-4 (default), warm start. Footprint: %s columns. *Settle*: the whole fall "
                "from the lattice (200 + 20 x layers steps; the runs of `pgs`/`uzawa`/`exact` have a wall-time "
                "cap (`fix halt` on the run's elapsed time, checked every step) and cover the first steps only when marked capped). *At rest*: a window at the end, "
-               "every solver started from the restart `apgd` wrote at the end of its settle (with its "
+               "every solver started from the restart `%s` (the default) wrote at the end of its settle (with its "
                "warm-start forces). Iterations = `f_ID[1]`, candidates = `f_ID[3]`, active = `f_ID[4]`; "
-               "KE end = kinetic energy per sphere at the end, in units of m g d." % fp, "",
+               "KE end = kinetic energy per sphere at the end, in units of m g d." % (fp, REF), "",
                table(["layers", "N", "solver", "settle steps", "it/step settle (mean)", "(max)",
                       "it/step at rest (mean)", "(max)", "candidates at rest", "active at rest",
                       "ms/step at rest", "maxiter stops settle / rest", "KE end"], tab), "",
                "![iterations against pile height](figures/perf_iterations_vs_height.png)", "",
-               "Iterations of `apgd` along the fall and at rest (per step, candidate rows on the "
-               "right axis):", "",
+               "Iterations of `%s` along the fall and at rest (per step, candidate rows on the "
+               "right axis):" % REF, "",
                "![iterations along the settle](figures/perf_iterations_along_settle.png)", "")
-        r20s = self.one(group="heights", solver="apgd", layers=20, phase="settle")
-        r20r = self.one(group="heights", solver="apgd", layers=20, phase="rest")
+        r20s = self.one(group="heights", solver=REF, layers=20, phase="settle")
+        r20r = self.one(group="heights", solver=REF, layers=20, phase="rest")
         if r20r:
-            self.targets.append(("1. resting 20-layer pile, apgd, tol 1e-4", "<= 30 it/step",
+            self.targets.append(("1. resting 20-layer pile, %s, tol 1e-4" % REF, "<= 30 it/step",
                                  "%s it/step" % fmt(r20r["it_mean"]), num(r20r["it_mean"]) / 30.0))
         if r20s:
             self.targets.append(("1. 20-layer pile during the settle", "<= 60 it/step",
                                  "%s it/step (max %s)" % (fmt(r20s["it_mean"]), fmt(r20s["it_max"])),
                                  num(r20s["it_mean"]) / 60.0))
-        ap = [(int(num(r["layers"])), num(r["it_mean"])) for r in rows
-              if r["solver"] == "apgd" and r["phase"] == "rest"]
-        if len(ap) >= 2:
-            ap.sort()
-            slope = np.polyfit(np.log([a for a, _ in ap]), np.log([b for _, b in ap]), 1)[0]
-            self.findings.append("Iterations of `apgd` at rest grow like layers^%.2f (%s)." % (
-                slope, ", ".join("%d layers: %.0f" % (a, b) for a, b in ap)))
+        for solver in (REF, "apgd"):
+            ap = [(int(num(r["layers"])), num(r["it_mean"])) for r in rows
+                  if r["solver"] == solver and r["phase"] == "rest"]
+            if len(ap) >= 2:
+                ap.sort()
+                slope = np.polyfit(np.log([a for a, _ in ap]), np.log([b for _, b in ap]), 1)[0]
+                self.findings.append("Iterations of `%s` at rest grow like layers^%.2f (%s)." % (
+                    solver, slope, ", ".join("%d layers: %.0f" % (a, b) for a, b in ap)))
+        # the default against apgd, same scenes, same run of the benchmark
+        for phase in ("settle", "rest"):
+            pairs = []
+            for r in rows:
+                if r["solver"] != REF or r["phase"] != phase:
+                    continue
+                a = self.one(group="heights", solver="apgd", layers=int(num(r["layers"])), phase=phase)
+                if a and r["status"] != "capped" and a["status"] != "capped":
+                    pairs.append("%s layers %s / %s it/step, %s / %s ms/step (%.2fx the time)" % (
+                        r["layers"], fmt(r["it_mean"]), fmt(a["it_mean"]), fmt(r["ms_per_step"]),
+                        fmt(a["ms_per_step"]), num(r["ms_per_step"]) / num(a["ms_per_step"])))
+            if pairs:
+                self.findings.append("`%s` against `apgd` (%s): %s." % (REF, phase, "; ".join(pairs)))
 
     def along_settle(self, results):
         path = results / "perf_steps.csv"
@@ -172,7 +190,7 @@ class Report:
             return
         series = {}
         for r in csv.DictReader(open(str(path))):
-            if r["id"].startswith("heights_") and r["id"].endswith("_apgd"):
+            if r["id"].startswith("heights_") and r["id"].endswith("_" + REF):
                 series.setdefault(r["id"].split("_")[1], []).append(
                     (int(r["step"]), int(r["iterations"]), int(r["candidates"])))
         if not series:
@@ -184,7 +202,7 @@ class Report:
             ax.plot(s[:, 0], s[:, 1], lw=0.7, color="C%d" % k, label=pile)
             ax2.plot(s[:, 0], s[:, 2], lw=1.5, ls=":", color="C%d" % k)
         ax.set_xlabel("step (h = 0.02)")
-        ax.set_ylabel("apgd iterations per step (solid)")
+        ax.set_ylabel("%s iterations per step (solid)" % REF)
         ax2.set_ylabel("candidate rows (dotted)")
         ax.legend(fontsize=7, loc="upper left")
         fig.tight_layout()
@@ -209,17 +227,17 @@ class Report:
                 tab.append([ratio, solver, r["steps"], fmt(r["it_mean"]), fmt(r["it_median"]), fmt(r["it_max"]),
                             fmt(r["cand_mean"], 4), fmt(r["active_mean"], 4), fmt(r["ms_per_step"]),
                             r["maxiter_stops"], fmt(r["ke_end"], 2)])
-                if solver == "apgd" and (worst is None or num(r["it_mean"]) > num(worst["it_mean"])):
+                if solver == REF and (worst is None or num(r["it_mean"]) > num(worst["it_mean"])):
                     worst = r
         self.w("## 2. A scene at rest with a mass ratio", "",
                "A heavy sphere (d = 10, at (7, 7, 6.2), mass 1, 10, 100 or 1000 x a small one through "
                "its density) on a walled 14 x 14 tray of spheres of d = 1 touching each other and the "
-               "floor (lattice sc 1.0, origin 0.5 0.5 0.5); `apgd` settles it, then each solver runs a "
-               "window from that state (tol 1e-4, warm start).", "",
+               "floor (lattice sc 1.0, origin 0.5 0.5 0.5); `%s` settles it, then each solver runs a "
+               "window from that state (tol 1e-4, warm start)." % REF, "",
                table(["mass ratio", "solver", "steps", "it/step (mean)", "(median)", "(max)", "candidates",
                       "active", "ms/step", "maxiter stops", "KE end"], tab), "")
         if worst:
-            self.targets.append(("1. scene at rest, mass ratio 1..1000 (apgd)", "<= 10 it/step",
+            self.targets.append(("1. scene at rest, mass ratio 1..1000 (%s)" % REF, "<= 10 it/step",
                                  "%s it/step (worst: ratio %s)" % (fmt(worst["it_mean"]), worst["ratio"]),
                                  num(worst["it_mean"]) / 10.0))
 
@@ -238,11 +256,11 @@ class Report:
                 continue
             ax.plot([num(r["n"]) for r in s], [num(r["ci_per_s_cand"]) for r in s], "o", color=COLORS[solver],
                     label="%s (candidate rows)" % solver, alpha=0.8)
-            if solver == "apgd":
+            if solver == REF:
                 ax.plot([num(r["n"]) for r in s], [num(r["ci_per_s_active"]) for r in s], "x", color=COLORS[solver],
-                        label="apgd (active rows)", alpha=0.8)
+                        label="%s (active rows)" % REF, alpha=0.8)
         for r in sorted(rows, key=lambda r: (r["solver"], num(r["n"]), r["id"])):
-            if r["solver"] != "apgd" and r["group"] != "heights":
+            if r["solver"] != REF and r["group"] != "heights":
                 continue
             tab.append([r["id"].split("_")[1], r["n"], r["solver"], fmt(r["tol"]), r["phase"], r["steps"],
                         fmt(r["it_mean"]), fmt(r["cand_mean"], 4), fmt(r["ci_per_s_cand"]), fmt(r["ci_per_s_active"]),
@@ -255,13 +273,13 @@ class Report:
                "of LAMMPS's timing breakdown (the fix's whole step: candidates, solve, update; the loop "
                "time is within a few % of it, see the last column). Rows are counted two ways: the "
                "candidate rows `f_ID[3]` (the rows of the problem; the headline figure, as in the "
-               "accuracy report) and the active rows `f_ID[4]` (force > 0). apgd on the piles of "
-               "every series, one rank; also `pgs` and `uzawa` on the height series (their per-iteration "
-               "cost differs).", "",
+               "accuracy report) and the active rows `f_ID[4]` (force > 0). `%s` on the piles of "
+               "every series, one rank; also `apgd`, `pgs` and `uzawa` on the height series (their per-iteration "
+               "cost differs)." % REF, "",
                table(["pile", "N", "solver", "tol", "phase", "steps", "it/step", "candidates", "ci/s (candidate rows)",
                       "ci/s (active rows)", "ms/step", "Modify % of loop"], tab), "",
                "![contact-iterations per second against N](figures/perf_throughput.png)", "")
-        r20 = self.one(group="heights", solver="apgd", layers=20, phase="settle")
+        r20 = self.one(group="heights", solver=REF, layers=20, phase="settle")
         if r20:
             self.targets.append(("2. throughput, 20-layer pile, one core", ">= 1.5e8 ci/s",
                                  "%s ci/s (candidate rows; %s active)" % (fmt(r20["ci_per_s_cand"]), fmt(r20["ci_per_s_active"])),
@@ -282,18 +300,18 @@ class Report:
         fig, ax = plt.subplots(figsize=(6.4, 4.2))
         for k, pile in enumerate(piles):
             hs = [r for r in rows if r["id"].split("_")[1] == pile and r["solver"] != "soft"]
-            # the 1e-4 hard run of a height-series pile is that series' apgd settle
-            if not any(num(r["tol"]) == 1e-4 for r in hs):
-                h = self.one(group="heights", solver="apgd", phase="settle", id="heights_%s_apgd" % pile)
+            # the 1e-4 hard run of a height-series pile is that series' settle
+            if not any(num(r["tol"]) == 1e-4 and r["solver"] == REF for r in hs):
+                h = self.one(group="heights", solver=REF, phase="settle", id="heights_%s_%s" % (pile, REF))
                 if h:
                     hs.append(h)
             ss = sorted([r for r in rows if r["id"].split("_")[1] == pile and r["solver"] == "soft"],
                         key=lambda r: -num(r["tol"]))
-            ref = next((r for r in hs if num(r["tol"]) == 1e-4), None)
+            ref = next((r for r in hs if num(r["tol"]) == 1e-4 and r["solver"] == REF), None)
             for r in sorted(hs, key=lambda r: -num(r["tol"])) + ss:
                 soft = r["solver"] == "soft"
                 t = num(r["projected_s"]) if soft else num(r["loop_s"])
-                tab.append([pile, r["n"], "soft, static overlap %s" % fmt(r["tol"]) if soft else "hard apgd tol %s" % fmt(r["tol"]),
+                tab.append([pile, r["n"], "soft, static overlap %s" % fmt(r["tol"]) if soft else "hard %s tol %s" % (r["solver"], fmt(r["tol"])),
                             "%s%s" % (r["steps"], " of %s (capped; time projected)" % r["steps_asked"] if r["status"] == "capped" else ""),
                             fmt(r.get("dt")) if soft else "0.02",
                             fmt(t), fmt(r["overlap_max"], 2), fmt(r.get("overlap_rest"), 2) if soft else "-",
@@ -303,8 +321,8 @@ class Report:
             ax.plot([num(r["overlap_max"]) for r in ss], [num(r["projected_s"]) for r in ss], mk + "-",
                     color=COLORS["soft"], label="soft, %s" % pile)
             for r in hs:
-                ax.plot([num(r["overlap_max"])], [num(r["loop_s"])], mk, color=COLORS["apgd"] if num(r["tol"]) == 1e-4 else "C5",
-                        label="hard tol %s, %s" % (fmt(r["tol"]), pile))
+                ax.plot([num(r["overlap_max"])], [num(r["loop_s"])], mk, color=COLORS.get(r["solver"], "C5") if num(r["tol"]) == 1e-4 else "C5",
+                        label="hard %s tol %s, %s" % (r["solver"], fmt(r["tol"]), pile))
             if ref and len(ss) >= 2:
                 ov = np.log([num(r["overlap_max"]) for r in ss])
                 tt = np.log([num(r["projected_s"]) for r in ss])
@@ -354,24 +372,24 @@ class Report:
         tab = []
         for r in rows:
             pile = r["id"].split("_")[1]
-            one = next((x for x in self.find(group="tts") if x["id"].split("_")[1] == pile and x["solver"] == "apgd"
+            one = next((x for x in self.find(group="tts") if x["id"].split("_")[1] == pile and x["solver"] == r["solver"]
                         and num(x["tol"]) == num(r["tol"])), None)
             if not one:
                 continue
             sp = num(one["loop_s"]) / num(r["loop_s"])
-            tab.append([pile, r["n"], fmt(r["tol"]), "%s / %s" % (one["steps"], r["steps"]),
+            tab.append([pile, r["n"], r["solver"], fmt(r["tol"]), "%s / %s" % (one["steps"], r["steps"]),
                         fmt(one["loop_s"]), fmt(r["loop_s"]), "%.2f" % sp,
                         "%s / %s" % (fmt(one["it_mean"]), fmt(r["it_mean"])),
                         "%s / %s" % (fmt(one["ke_end"], 3), fmt(r["ke_end"], 3)),
                         "%s / %s" % (fmt(one["overlap_max"], 2), fmt(r["overlap_max"], 2)),
                         fmt(r["comm_s"]), "%s / %s" % (r["load_before"], r["load_after"])])
-            self.targets.append(("4. MPI, 2 ranks vs 1 (%s, N %s, tol %s; target on 64,000)" % (pile, r["n"], fmt(r["tol"])),
+            self.targets.append(("4. MPI, 2 ranks vs 1 (%s, N %s, %s, tol %s; target on 64,000)" % (pile, r["n"], r["solver"], fmt(r["tol"])),
                                  ">= 1.7x", "%.2fx" % sp, 1.7 / sp))
         self.w("## 5. MPI: 1 against 2 ranks", "",
                "The pile of section 4, `processors * * 1`, `mpirun --oversubscribe -np 2` against the "
                "serial run of the same deck. On this 2-core machine shared with another engineer's builds "
                "and tests, a 2-rank run competes with them for the cores: look at the load column.", "",
-               table(["pile", "N", "tol", "steps 1 / 2 ranks", "loop s, 1 rank", "loop s, 2 ranks", "speed-up",
+               table(["pile", "N", "solver", "tol", "steps 1 / 2 ranks", "loop s, 1 rank", "loop s, 2 ranks", "speed-up",
                       "it/step 1 / 2", "KE end 1 / 2", "largest overlap 1 / 2", "Comm s (2 ranks)",
                       "load before / after (2 ranks)"], tab), "")
 
@@ -420,25 +438,30 @@ class Report:
         if capped:
             head += ["Runs stopped by their wall-time cap (the numbers cover the steps done): " +
                      ", ".join(capped) + ".", ""]
-        Path(doc).write_text("\n".join(head + body) + "\n")
+        kept = []
+        if Path(doc).exists():
+            old = Path(doc).read_text().split("\n")
+            if KEEP_MARK in old:
+                kept = old[old.index(KEEP_MARK):]
+        Path(doc).write_text("\n".join(head + body) + "\n" + ("\n".join(kept).rstrip("\n") + "\n" if kept else ""))
 
     def then_and_now(self):
         """The issue's own measurements (filed with an older binary) next to this run's."""
         rows = []
-        big = [r for r in self.find(group="tts", solver="apgd") if r["id"].split("_")[1] == "pile20x20x20"]
+        big = [r for r in self.find(group="tts", solver=REF) if r["id"].split("_")[1] == "pile20x20x20"]
         h4 = next((r for r in big if num(r["tol"]) == 1e-4), None)
         h2 = next((r for r in big if num(r["tol"]) == 1e-2), None)
         soft = self.one(group="tts", solver="soft", id="tts_pile20x20x20_soft_0.001")
-        m2 = self.one(group="mpi", id="mpi2_pile20x20x20_apgd_tol0.01")
-        tray = self.one(group="tray", solver="apgd", ratio=1000, phase="rest")
+        m2 = self.one(group="mpi", id="mpi2_pile20x20x20_%s_tol0.01" % REF)
+        tray = self.one(group="tray", solver=REF, ratio=1000, phase="rest")
         if h4:
-            rows.append(["8000-sphere settle, apgd tol 1e-4 (wall s / 600 steps)", "104 s",
+            rows.append(["8000-sphere settle, tol 1e-4 (wall s / 600 steps; issue: apgd, now: %s)" % REF, "104 s",
                          "%s s / %s steps" % (fmt(h4["loop_s"]), h4["steps"])])
             rows.append(["  iterations per step near the end of the settle", "about 540",
                          "%s (mean over the settle), %s (max)" % (fmt(h4["it_mean"]), fmt(h4["it_max"]))])
             rows.append(["  contact-iterations per second", "about 4e7", fmt(h4["ci_per_s_cand"])])
         if h2:
-            rows.append(["8000-sphere settle, apgd tol 1e-2", "23 s", "%s s" % fmt(h2["loop_s"])])
+            rows.append(["8000-sphere settle, tol 1e-2 (issue: apgd, now: %s)" % REF, "23 s", "%s s" % fmt(h2["loop_s"])])
         if soft:
             rows.append(["8000-sphere soft twin (issue: overlap 2.4e-3, dt = t_c/50)", "54 s",
                          "%s s (overlap %s in the fall, %s at rest; dt = t_c/20)" % (
@@ -462,14 +485,14 @@ class Report:
             elif not math.isnan(d):
                 out.append("%s: met (%s, target %s)." % (a, c, b))
         st = [r for r in self.find(group="heights", phase="settle") if r["solver"] in ("pgs", "uzawa")]
-        ap = {r["layers"]: r for r in self.find(group="heights", phase="settle", solver="apgd")}
+        ap = {r["layers"]: r for r in self.find(group="heights", phase="settle", solver=REF)}
         worse = []
         for r in st:
             if r["layers"] in ap:
-                worse.append("%s %s layers: %s vs apgd %s" % (r["solver"], r["layers"], fmt(r["it_mean"]),
-                                                              fmt(ap[r["layers"]]["it_mean"])))
+                worse.append("%s %s layers: %s vs %s %s" % (r["solver"], r["layers"], fmt(r["it_mean"]), REF,
+                                                            fmt(ap[r["layers"]]["it_mean"])))
         if worse:
-            out.append("Iterations per step during the settle against apgd (tol 1e-4; pgs/uzawa "
+            out.append("Iterations per step during the settle against %s (tol 1e-4; pgs/uzawa " % REF +
                        "over the steps their cap allowed, mostly the early, cheaper part of the fall): "
                        + "; ".join(worse) + ".")
         return out

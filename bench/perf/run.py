@@ -38,18 +38,23 @@ def settle_time(ke, cpu):
     return float(cpu[above[-1] + 1])
 
 
+# The default frictionless solver (the fix's default without friction): the reference run of
+# every series; apgd (the default before it, and with friction) runs beside it.
+REF = "cg"
+
+
 def config(quick):
     """Sizes, run lengths (steps of h = 0.02) and wall-time caps (s) per run (fix halt)."""
     if quick:
         return dict(
             footprint=6, layers=[5, 10], exact_layers=5, settle=lambda L: 150 + 20 * L,
-            window=15, settle_cap=15.0, window_cap=8.0, apgd_cap=60.0,
+            window=15, settle_cap=15.0, window_cap=8.0, long_cap=60.0,
             tray_ratios=[1, 1000], tray_settle=150, tray_window=20,
             tray_solvers=["apgd", "pgs"], throughput=[(10, 5), (16, 5)], thr_steps=150, thr_cap=20.0,
             ts_pile=(8, 8, 10), soft_overlaps=[1e-3, 1e-4], soft_cap=40.0, mpi_tols=[1e-2])
     return dict(
         footprint=10, layers=[5, 10, 20, 40], exact_layers=5, settle=lambda L: 200 + 20 * L,
-        window=40, settle_cap=20.0, window_cap=12.0, apgd_cap=200.0,
+        window=40, settle_cap=20.0, window_cap=12.0, long_cap=200.0,
         tray_ratios=[1, 10, 100, 1000], tray_settle=200, tray_window=50,
         tray_solvers=["apgd", "pgs", "uzawa"], throughput=[(10, 10), (20, 10), (32, 10), (45, 10)],
         thr_steps=250, thr_cap=45.0,
@@ -232,19 +237,19 @@ class Bench:
             name = "pile%dx%dx%d" % (fp, fp, L)
             data = self.datafile(sc, name)
             settle, win = c["settle"](L), c["window"]
-            rid = "heights_%s_apgd" % name
-            self.hard(rid, "heights", sc, data, "apgd", 1e-4,
-                      [(settle, c["apgd_cap"]), (win, c["apgd_cap"])], ["settle", "rest"],
+            rid = "heights_%s_%s" % (name, REF)
+            self.hard(rid, "heights", sc, data, REF, 1e-4,
+                      [(settle, c["long_cap"]), (win, c["long_cap"])], ["settle", "rest"],
                       restart_out="settled.restart")
             restart = self.work / rid / "settled.restart"
-            others = ["pgs", "uzawa"] + (["exact"] if L <= c["exact_layers"] else [])
+            others = ["apgd", "pgs", "uzawa"] + (["exact"] if L <= c["exact_layers"] else [])
             for solver in others:
-                cap = c["settle_cap"] * (2 if solver == "exact" else 1)
+                cap = c["long_cap"] if solver == "apgd" else c["settle_cap"] * (2 if solver == "exact" else 1)
                 self.hard("heights_%s_%s_settle" % (name, solver), "heights", sc, data, solver, 1e-4,
                           [(settle, cap)], ["settle"])
                 if restart.exists():
                     self.hard("heights_%s_%s_rest" % (name, solver), "heights", sc, data, solver,
-                              1e-4, [(win, c["window_cap"])], ["rest"],
+                              1e-4, [(win, c["long_cap"] if solver == "apgd" else c["window_cap"])], ["rest"],
                               start=("restart", str(restart)))
 
     def tray(self):
@@ -253,13 +258,13 @@ class Bench:
             sc = scenes.tray(ratio)
             name = "tray_m%d" % ratio
             data = self.datafile(sc, name)
-            rid = "tray_%s_apgd" % name
-            self.hard(rid, "tray", sc, data, "apgd", 1e-4,
+            rid = "tray_%s_%s" % (name, REF)
+            self.hard(rid, "tray", sc, data, REF, 1e-4,
                       [(c["tray_settle"], 60.0), (c["tray_window"], 60.0)], ["settle", "rest"],
                       restart_out="settled.restart")
             restart = self.work / rid / "settled.restart"
             for solver in c["tray_solvers"]:
-                if solver != "apgd" and restart.exists():
+                if solver != REF and restart.exists():
                     self.hard("tray_%s_%s_rest" % (name, solver), "tray", sc, data, solver, 1e-4,
                               [(c["tray_window"], c["window_cap"])], ["rest"],
                               start=("restart", str(restart)))
@@ -270,7 +275,7 @@ class Bench:
             sc = scenes.pile(fp, fp, L)
             name = "pile%dx%dx%d" % (fp, fp, L)
             data = self.datafile(sc, name)
-            self.hard("throughput_%s_apgd" % name, "throughput", sc, data, "apgd", 1e-4,
+            self.hard("throughput_%s_%s" % (name, REF), "throughput", sc, data, REF, 1e-4,
                       [(c["thr_steps"], c["thr_cap"])], ["settle"])
 
     def hard_vs_soft_and_mpi(self):
@@ -285,8 +290,11 @@ class Bench:
         steps = c["settle"](L)
         duration = steps * 0.02
         for tol in (1e-4, 1e-2):
-            self.hard("tts_%s_apgd_tol%g" % (name, tol), "tts", sc, data, "apgd", tol,
+            self.hard("tts_%s_%s_tol%g" % (name, REF, tol), "tts", sc, data, REF, tol,
                       [(steps, 400.0)], ["settle"], extra=dict(mpi_ref=True))
+        # the default before cg, same pile, same run of the benchmark
+        self.hard("tts_%s_apgd_tol0.0001" % name, "tts", sc, data, "apgd", 1e-4,
+                  [(steps, 400.0)], ["settle"], extra=dict(mpi_ref=True))
         for ov in c["soft_overlaps"][:2]:
             self.soft("tts_%s_soft_%g" % (name, ov), "tts", sc, data, ov, duration)
         # the stiffness sweep on the smaller pile of the heights series (same duration)
@@ -296,12 +304,12 @@ class Bench:
         name2 = "pile%dx%dx%d" % (fp, fp, L2)
         data2 = self.datafile(sc2, name2)
         steps2 = c["settle"](L2)
-        self.hard("tts_%s_apgd_tol0.01" % name2, "tts", sc2, data2, "apgd", 1e-2, [(steps2, 200.0)],
+        self.hard("tts_%s_%s_tol0.01" % (name2, REF), "tts", sc2, data2, REF, 1e-2, [(steps2, 200.0)],
                   ["settle"])
         for ov in c["soft_overlaps"]:
             self.soft("tts_%s_soft_%g" % (name2, ov), "tts", sc2, data2, ov, steps2 * 0.02)
         for tol in c["mpi_tols"]:
-            self.hard("mpi2_%s_apgd_tol%g" % (name, tol), "mpi", sc, data, "apgd", tol,
+            self.hard("mpi2_%s_%s_tol%g" % (name, REF, tol), "mpi", sc, data, REF, tol,
                       [(steps, 400.0)], ["settle"], ranks=2)
 
     # ---- output

@@ -16,7 +16,8 @@ class LAMMPS;
 namespace hardcontact {
 
 struct FixOptions {
-  std::string solver_name = "apgd";
+  // empty: the default, chosen once the law is known (cg without friction, apgd with it)
+  std::string solver_name;
   SolverSettings settings;
   std::vector<PlaneWall> walls;
   std::vector<std::string> wall_variables;    // per wall: equal-style variable name, or ""

@@ -20,6 +20,15 @@ hardcontact_deck_test(NAME stab_step_sweep_wall_np1 HOSTS launcher SCRIPT integr
   LABELS stability ARGS --case wall --timeout 60 TIMEOUT 300)
 hardcontact_deck_test(NAME stab_step_sweep_wall_np2 HOSTS launcher SCRIPT integration/test_stab_step_sweep.py NP 2
   LABELS stability ARGS --case wall --steps small,huge --timeout 60 TIMEOUT 300)
+# the same with the projected CG solver (the default without friction)
+foreach(_case free wall)
+  hardcontact_deck_test(NAME stab_step_sweep_${_case}_cg_np1 HOSTS launcher SCRIPT integration/test_stab_step_sweep.py NP 1
+    LABELS stability ARGS --case ${_case} --solver cg --timeout 60 TIMEOUT 300)
+  hardcontact_deck_test(NAME stab_step_sweep_${_case}_cg_np2 HOSTS launcher SCRIPT integration/test_stab_step_sweep.py NP 2
+    LABELS stability ARGS --case ${_case} --solver cg --steps small,huge --timeout 60 TIMEOUT 300)
+endforeach()
+hardcontact_deck_test(NAME stab_step_sweep_free_tight_cg_np1 HOSTS launcher SCRIPT integration/test_stab_step_sweep.py NP 1
+  LABELS stability ARGS --case free --solver cg --tol 1e-10 --timeout 60 TIMEOUT 300)
 
 # dense crystals (hexagonal 2d, FCC 3d) squeezed by gravity between walls: 10^3 steps at rest
 # in CI, 10^4 in the soak variants; apgd warm/cold, uzawa and exact must agree
@@ -31,7 +40,7 @@ foreach(_dim 2 3)
     LABELS "stability;soak" ARGS --dim ${_dim} --steps 10000 --timeout 600 TIMEOUT 2400)
 endforeach()
 hardcontact_deck_test(NAME stab_crystal_2d_np2 HOSTS launcher SCRIPT integration/test_stab_crystal.py NP 2
-  LABELS stability ARGS --dim 2 --variants apgd_warm,apgd_cold --timeout 60 TIMEOUT 150)
+  LABELS stability ARGS --dim 2 --variants apgd_warm,apgd_cold,cg_warm --timeout 60 TIMEOUT 150)
 
 # radius ratio 10, mass ratio 1000: heavy spheres through a bed of light ones
 hardcontact_deck_test(NAME stab_polydisperse_np1 HOSTS launcher SCRIPT integration/test_stab_polydisperse.py NP 1
@@ -39,16 +48,19 @@ hardcontact_deck_test(NAME stab_polydisperse_np1 HOSTS launcher SCRIPT integrati
 hardcontact_deck_test(NAME stab_polydisperse_np2 HOSTS launcher SCRIPT integration/test_stab_polydisperse.py NP 2
   LABELS stability ARGS --timeout 120 TIMEOUT 300)
 
-# deep piles: a 40-row disordered 2d pile and a 60-sphere column; in CI the default solver on
-# both, and on the column the paper's uzawa and the exact reference; soak: 2 x 10^4 steps each
-hardcontact_deck_test(NAME stab_deep_pile_pile2d_apgd_np1 HOSTS launcher SCRIPT integration/test_stab_deep_pile.py
-  NP 1 LABELS stability ARGS --case pile2d --solver apgd --timeout 90 TIMEOUT 240)
-foreach(_solver apgd uzawa exact)
+# deep piles: a 40-row disordered 2d pile and a 60-sphere column; in CI the default solvers
+# (cg without friction, apgd) on both, and on the column the paper's uzawa and the exact
+# reference; soak: 2 x 10^4 steps each
+foreach(_solver apgd cg)
+  hardcontact_deck_test(NAME stab_deep_pile_pile2d_${_solver}_np1 HOSTS launcher SCRIPT integration/test_stab_deep_pile.py
+    NP 1 LABELS stability ARGS --case pile2d --solver ${_solver} --timeout 90 TIMEOUT 240)
+endforeach()
+foreach(_solver apgd cg uzawa exact)
   hardcontact_deck_test(NAME stab_deep_pile_column_${_solver}_np1 HOSTS launcher SCRIPT integration/test_stab_deep_pile.py
     NP 1 LABELS stability ARGS --case column --solver ${_solver} --timeout 40 TIMEOUT 120)
 endforeach()
 foreach(_case pile2d column)
-  foreach(_solver apgd uzawa)
+  foreach(_solver apgd cg uzawa)
     hardcontact_deck_test(NAME stab_deep_pile_${_case}_${_solver}_soak_np1 HOSTS launcher SCRIPT integration/test_stab_deep_pile.py
       NP 1 LABELS "stability;soak" ARGS --case ${_case} --solver ${_solver} --steps 20000 --timeout 1700
       TIMEOUT 3600)

@@ -176,7 +176,7 @@ CASES = [
     case("rho_nan", deck("rho nan"), ["rho", "expected a number"]),
     # solver, warmstart
     case("solver_unknown", deck("solver nonsense"),
-         ["solver 'nonsense' is unknown", "apgd", "uzawa"]),
+         ["solver 'nonsense' is unknown", "cg", "apgd", "uzawa"]),
     case("solver_exact_under_mpirun", deck("solver exact"),
          ["solver exact runs on one processor only", "use apgd"], np4=True, min_np=2),
     case("warmstart_maybe", deck("warmstart maybe"), ["warmstart must be yes or no", "'maybe'"]),
@@ -228,6 +228,8 @@ CASES = [
          ["wall ... friction needs a value"]),
     case("friction_exact_solver", deck("solver exact friction 0.5"),
          ["solver exact has no friction", "use apgd, pgs or uzawa"]),
+    case("friction_cg_solver", deck("solver cg friction 0.5"),
+         ["solver cg has no friction", "use apgd, pgs or uzawa"], np4=True),
     case("rolling_negative", deck("friction 0.5 rolling -0.1"),
          ["rolling must be a coefficient >= 0"]),
     case("rolling_without_friction", deck("rolling 0.1"),

@@ -11,9 +11,13 @@ Checked for each outlet:
     the bottom of the box) = 480;
   * no solve stopped at maxiter, f_hc[7] <= 1e-4 at every thermo step;
   * the discharge rate (slope of the discs left in the silo, beverloo.py, after 0.1 s of
-    flow) is within 25% of the full example's (960 discs: 477 /s for 8 mm, 922 /s for 12 mm),
+    flow) is 0.70-1.10 of the full example's (960 discs: 477 /s for 8 mm, 922 /s for 12 mm),
     and the ratio Q(12 mm) / Q(8 mm) is 1.6-2.4 (Beverloo's (D - k d)^3/2 with the example's
-    k = 0.59: 2.0; the measured one: 1.95)."""
+    k = 0.59: 2.0; the measured one: 1.95).
+The half-height bed drains a little slower than the full one, and a run's rate over 0.15 s
+of flow (about 90 discs) moves with the solver, the flow being chaotic: measured 358 (cg)
+and 412 (apgd) /s for 8 mm, 780 and 792 /s for 12 mm (0.75-0.86 of the full example; with
+0.4 s of flow 395 / 380 and 725 / 718)."""
 
 import os
 import subprocess
@@ -66,8 +70,8 @@ def test():
                  "D = %d mm: 480 discs, %d left the silo (%d of them the box)" % (w, 480 - inside[-1], lost[-1]))
         q = beverloo.rate(str(res.workdir))[0]
         rates[w] = q
-        lr.check(abs(q / FULL[w] - 1.0) <= 0.25, "D = %d mm: discharge rate %.0f /s (full example %.0f /s)"
-                 % (w, q, FULL[w]))
+        lr.check(0.70 <= q / FULL[w] <= 1.10, "D = %d mm: discharge rate %.0f /s, 0.70-1.10 of the full "
+                 "example's %.0f /s" % (w, q, FULL[w]))
     ratio = rates[12] / rates[8]
     lr.check(1.6 <= ratio <= 2.4, "Q(12 mm) / Q(8 mm) = %.2f" % ratio)
 

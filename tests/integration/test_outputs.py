@@ -508,9 +508,14 @@ def part_d_row(args, known_bugs):
     ke = th["KinEng"]
     lr.check(per_atom <= 2 * ke_unit,
              "(d, row) KE per atom stays below 2 m (g h)^2 = %.3g (%.3g)" % (2 * ke_unit, per_atom))
-    lr.check(float(ke[len(ke) // 2:].max()) <= float(ke.max()) and
-             float(ke[-20:].max()) <= float(ke[:40].max()) * (1 + 1e-9),
-             "(d, row) KE does not grow once the overlaps clear (no feedback)")
+    # Once the overlaps are cleared (f_1[2] <= tol), KE stays below the largest it reached while
+    # they cleared: clearing may add energy (f_ID[10], bounded above), a cleared row may not.
+    # (The plateau is reached at different steps by different solvers: apgd drops the
+    # clearing rows' forces to 0 early, cg keeps tiny ones within tol until the row clears.)
+    cleared = int(np.argmax(th["f_1[2]"] <= 1e-4))
+    lr.check(cleared > 0 and float(ke[cleared:].max()) <= float(ke[:cleared + 1].max()) * (1 + 1e-9),
+             "(d, row) KE does not grow once the overlaps clear at step %d (no feedback): %.12g <= %.12g"
+             % (cleared, float(ke[cleared:].max()), float(ke[:cleared + 1].max())))
 
 
 def part_d(args):

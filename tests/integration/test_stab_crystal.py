@@ -16,7 +16,7 @@ Asserted after settling (d = 2 r, L = rows or layers):
   the ideal crystal: every centre within L tol d of its ideal lattice site (each of the L
      contacts below it may be off by tol d);
   unique velocities / positions (Lemma 1, Prop. 5: u is unique even when mu is not): the runs
-     apgd + warmstart yes, apgd + warmstart no, uzawa (the paper's solver, warm) and exact
+     apgd + warmstart yes, apgd + warmstart no, uzawa (the paper's solver, warm), cg (warm) and exact
      (active set, machine precision; serial only) end at the same positions within L tol d;
   no creep: no centre moves more than L tol d between the end of settling and the end of the
      run (10^3 or 10^4 steps);
@@ -54,6 +54,7 @@ VARIANTS = {
     "apgd_warm": "solver apgd warmstart yes",
     "apgd_cold": "solver apgd warmstart no",
     "uzawa_warm": "solver uzawa warmstart yes",
+    "cg_warm": "solver cg warmstart yes",
     "exact": "solver exact",    # machine precision, one processor: the reference
 }
 

@@ -11,7 +11,7 @@ Cases (--case):
            settled state is known exactly: sphere k (from 0) at z = r (2k + 1), the floor
            carrying the weight 60 m g through every contact below (contact k carries
            (60 - k) m g).
---solver apgd (default), uzawa (the paper's; iterations grow like height^2) or exact (the
+--solver apgd (default), cg, uzawa (the paper's; iterations grow like height^2) or exact (the
 machine-precision reference); default tol 1e-4; --steps after NSETTLE (1000 in CI, 2 x 10^4 in
 the soak variant). Run 1 rebuilds the neighbour list at every step (neigh_modify check no), so
 that the pile's properties are measured whatever the fix's rebuild look-ahead does; run 2 is

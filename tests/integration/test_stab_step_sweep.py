@@ -20,7 +20,8 @@ energy as above, momentum in x and y (the wall pushes along z only).
 Options: --case free|wall, --steps tiny,small,medium,large,huge (which steps), --tol (default
 1e-4, the fix's default), --solver (default apgd). The registered variants (stability.cmake):
 default tol serial and 2 ranks; tol 1e-10 (the exact-projection properties, at round-off);
-solver exact (Lawson-Hanson, machine precision) at the default tol."""
+solver exact (Lawson-Hanson, machine precision) at the default tol; solver cg (projected CG, the
+default without friction) serially, on 2 ranks and at tol 1e-10."""
 
 import math
 import sys

@@ -27,11 +27,18 @@ void ProjectedCg::start(const SolverSettings &, std::vector<double> &mu, std::ve
   near_mark_.assign(nc, 0);
   wc_.assign(p.n_dof(), Vec3::Zero());
   op_.velocities<1>(set_.rows(), mu, u);
-  for (const int c : set_.rows()) g_[c] = op_.gap(c, u);
+  double dmax = 0.0;
+  for (const int c : set_.rows()) {
+    g_[c] = op_.gap(c, u);
+    dmax = std::max(dmax, op_.diagonal(c));
+  }
   index_rows();
   refresh(mu);
   cg_ = false;
-  rho_ = 0.0;
+  // reported step (f_ID[8]): the preconditioner's step on its stiffest row, 1 / max diag(A)
+  // (the exact step along that row alone), as apgd with friction reports its stiffest one
+  dmax = op_.ops().max_all(dmax);
+  rho_ = dmax > 0.0 ? 1.0 / dmax : 0.0;
 }
 
 void ProjectedCg::grown(const SolverSettings &, std::vector<double> &mu, std::vector<Vec3> &u)
