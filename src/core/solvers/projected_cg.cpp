@@ -18,10 +18,10 @@ void ProjectedCg::start(const SolverSettings &, std::vector<double> &mu, std::ve
 {
   const ContactProblem &p = op_.problem();
   const int nc = p.n_contacts();
-  d_.resize(nc);
+  inv_d_.resize(nc);
   for (int c = 0; c < nc; ++c) {
     const double d = op_.diagonal(c);
-    d_[c] = d > 0.0 ? d : 1.0;    // a row no body can move: any scale
+    inv_d_[c] = d > 0.0 ? 1.0 / d : 1.0;    // a row no body can move: any scale
   }
   for (auto *v : {&dir_, &q_, &clip_, &qc_}) v->assign(nc, 0.0);
   near_mark_.assign(nc, 0);
@@ -82,7 +82,7 @@ void ProjectedCg::refresh(const std::vector<double> &mu)
   double r = 0.0, num = 0.0;
   for (const int c : set_.rows()) {
     r = std::max(r, set_.violation(c, &g_[c], &mu[c], Coefficients{}));
-    if (p.counted[c] && free(c, mu)) num += g_[c] / d_[c] * q_[c];
+    if (p.counted[c] && free(c, mu)) num += g_[c] * inv_d_[c] * q_[c];
   }
   residual_ = r;
   gamma_num_ = op_.ops().sum_all(num);
@@ -95,7 +95,7 @@ double ProjectedCg::product(const std::vector<double> &mu, double gamma)
   op_.impulse_velocities_with(
       rows,
       [&](int c) {
-        dir_[c] = free(c, mu) ? g_[c] / d_[c] - gamma * dir_[c] : 0.0;
+        dir_[c] = free(c, mu) ? g_[c] * inv_d_[c] - gamma * dir_[c] : 0.0;
         return dir_[c];
       },
       w_);
@@ -137,7 +137,7 @@ void ProjectedCg::move_and_refresh(double a, std::vector<double> &mu, std::vecto
     mu[c] -= a * dir_[c];
     g_[c] -= a * q_[c];
     r = std::max(r, set_.violation(c, &g_[c], &mu[c], Coefficients{}));
-    if (p.counted[c] && free(c, mu)) num += g_[c] / d_[c] * q_[c];
+    if (p.counted[c] && free(c, mu)) num += g_[c] * inv_d_[c] * q_[c];
   }
   const size_t n = w_.size();
   for (size_t b = 0; b < n; ++b) u[b] -= a * w_[b];

@@ -52,7 +52,7 @@ class ProjectedCg : public IterativeSolver<NormalLaw> {
   // Rows per body over the working set (CSR), for the sparse correction.
   void index_rows();
 
-  std::vector<double> d_;      // diag(A) per row (1 for a row no body can move)
+  std::vector<double> inv_d_;  // 1 / diag(A) per row (1 for a row no body can move)
   std::vector<double> dir_;    // CG direction in mu's variables (D^-1/2 p, p in x)
   std::vector<double> q_;      // A dir_
   std::vector<Vec3> w_;        // the velocity change of dir_
