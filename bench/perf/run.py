@@ -62,6 +62,11 @@ def config(quick):
         mpi_tols=[1e-4, 1e-2])
 
 
+# The parts of a run (--only) and the groups of rows each writes
+DEFAULT_PARTS = "heights,tray,throughput,tts"
+PART_OF_GROUP = dict(heights="heights", tray="tray", throughput="throughput", tts="tts", mpi="tts")
+
+
 def loadavg():
     return open("/proc/loadavg").read().split()[0]
 
@@ -78,6 +83,28 @@ class Bench:
         self.steps = []
         self.t0 = time.time()
         self.data = {}
+        self.part = ""
+        # A partial run (--only) keeps the rows of the other parts from the last runs, so the
+        # report covers every part; a row's part is its own column or, in files written before
+        # it existed, follows from its group.
+        if set(args.only.split(",")) != set(DEFAULT_PARTS.split(",")):
+            self.keep_other_parts(args.only.split(","))
+
+    def keep_other_parts(self, only):
+        for fname, rows in (("perf_runs.csv", self.runs), ("perf_steps.csv", self.steps)):
+            path = self.results / fname
+            if not path.exists():
+                continue
+            for r in csv.DictReader(open(str(path))):
+                part = r.get("part") or PART_OF_GROUP.get(r.get("group", ""), "")
+                if fname == "perf_steps.csv":
+                    part = r.get("part") or ""
+                    if not part:
+                        run = next((x for x in self.runs if x["id"] == r["id"]), None)
+                        part = run["part"] if run else ""
+                if part and part not in only:
+                    r["part"] = part
+                    rows.append(r)
 
     def note(self, msg):
         print("[%5.0f s, load %s] %s" % (time.time() - self.t0, loadavg(), msg), flush=True)
@@ -129,7 +156,7 @@ class Bench:
         except lmp.LammpsError as e:
             self.note("FAILED: %s" % str(e).splitlines()[0])
             self.runs.append(dict(id=rid, group=group, solver=solver, tol=tol, n=scene["n"],
-                                  ranks=ranks, status="failed"))
+                                  ranks=ranks, status="failed", part=self.part))
             return []
         blocks, times = lmp.thermo_blocks(text), lmp.timings(text)
         mgd = scene["mean_mass"] * scene["mean_d"]
@@ -164,9 +191,10 @@ class Bench:
             row["ci_per_s_active"] = row["ci_active"] / row["modify_s"] if row["modify_s"] > 0 else float("nan")
             row["ms_per_step"] = 1e3 * t["loop"] / max(done, 1)
             row.update(extra or {})
+            row["part"] = self.part
             rows.append(row)
             for s, a, c, ac, e, o in zip(b["Step"][sl], it, cand, act, ke[1:], b["f_hc[7]"][sl]):
-                self.steps.append(dict(id=rid, phase=name, step=int(s), iterations=int(a),
+                self.steps.append(dict(id=rid, part=self.part, phase=name, step=int(s), iterations=int(a),
                                        candidates=int(c), active=int(ac), ke_per_mgd=float(e),
                                        overlap=float(o)))
         self.runs.extend(rows)
@@ -221,6 +249,7 @@ class Bench:
                    ms_per_step=1e3 * t["loop"] / max(t["steps"], 1),
                    load_before=lb, load_after=la, wall_s=wall)
         row.update(extra or {})
+        row["part"] = self.part
         self.runs.append(row)
         self.note("  -> %d steps, %.1f s, largest overlap %.2g (at rest %.2g), KE end %.2g" % (
             row["steps"], row["loop_s"], row["overlap_max"], row["overlap_rest"], row["ke_end"]))
@@ -312,6 +341,22 @@ class Bench:
             self.hard("mpi2_%s_%s_tol%g" % (name, REF, tol), "mpi", sc, data, REF, tol,
                       [(steps, 400.0)], ["settle"], ranks=2)
 
+    def big(self):
+        """Issue 15's 64,000 spheres (targets 3 and 4): an 80 x 80 x 10 pile (the 10-layer pile
+        of section 1 on a footprint 64 x larger), its settle hard at tol 1e-4 on 1 and 2 ranks
+        and its soft twin at a static overlap of 1e-3."""
+        c = self.cfg
+        nx, L = (20, 10) if self.a.quick else (80, 10)
+        sc = scenes.pile(nx, nx, L)
+        name = "pile%dx%dx%d" % (nx, nx, L)
+        data = self.datafile(sc, name)
+        steps = c["settle"](L)
+        self.hard("tts_%s_%s_tol0.0001" % (name, REF), "tts", sc, data, REF, 1e-4,
+                  [(steps, 1200.0)], ["settle"], extra=dict(mpi_ref=True))
+        self.hard("mpi2_%s_%s_tol0.0001" % (name, REF), "mpi", sc, data, REF, 1e-4,
+                  [(steps, 1200.0)], ["settle"], ranks=2)
+        self.soft("tts_%s_soft_0.001" % name, "tts", sc, data, 1e-3, steps * 0.02)
+
     # ---- output
 
     def save(self):
@@ -333,14 +378,17 @@ def main():
     ap.add_argument("--soft-lmp", required=True)
     ap.add_argument("--work", required=True)
     ap.add_argument("--results", required=True)
-    ap.add_argument("--only", default="heights,tray,throughput,tts",
-                    help="comma-separated subset of heights,tray,throughput,tts")
+    ap.add_argument("--only", default=DEFAULT_PARTS,
+                    help="comma-separated subset of heights,tray,throughput,tts,big (big: the "
+                         "64,000-sphere pile, hard 1 and 2 ranks and its soft twin; not in the "
+                         "default set: about 15 minutes more)")
     a = ap.parse_args()
     b = Bench(a)
     only = a.only.split(",")
     for part, fn in (("heights", b.heights), ("tray", b.tray), ("throughput", b.throughput),
-                     ("tts", b.hard_vs_soft_and_mpi)):
+                     ("tts", b.hard_vs_soft_and_mpi), ("big", b.big)):
         if part in only:
+            b.part = part
             fn()
     b.save()
     b.note("done")
