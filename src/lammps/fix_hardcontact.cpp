@@ -176,7 +176,7 @@ void FixHardContact::initial_integrate(int)
   effects.bounce_vmin = options_.bounce_vmin;
   effects.wall_velocity = walls_.advance(update->dt);
   regions_.advance();    // moving regions to t^{n+1}, with their velocities over the step
-  effects.moving_obstacles = regions_.moving();
+  effects.moving_obstacles = regions_.moving() || effects.wall_velocity != nullptr;
   effects.cohesion = &options_.cohesion;
   if (options_.has_friction()) {
     effects.friction = &options_.friction;

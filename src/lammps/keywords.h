@@ -45,12 +45,14 @@ struct FixOptions {
     return any_positive(friction) || any_positive(plane_friction) ||
            any_positive(region_friction) || has_rolling();
   }
+  // whether a wall's friction value is its own (not kByType)
+  static bool own_friction(double v) { return v != kByType; }
   bool has_wall_friction() const
   {
     for (const double v : plane_friction)
-      if (v != kByType) return true;
+      if (own_friction(v)) return true;
     for (const double v : region_friction)
-      if (v != kByType) return true;
+      if (own_friction(v)) return true;
     return false;
   }
   bool has_rolling() const { return any_positive(rolling); }

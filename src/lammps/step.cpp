@@ -4,6 +4,7 @@
 // then q^{n+1} = q^n + h u^{n+1}.
 #include "step.h"
 
+#include "keywords.h"
 #include "sources/row_sink.h"
 #include "lammps_ops.h"
 #include "lammps_compat.h"
@@ -153,7 +154,7 @@ void ContactStep::wall_values_of_rows(const std::vector<double> &by_wall, int fi
     const int j = problem_.body_j[c];
     if (!is_wall(j)) continue;
     const double v = by_wall[wall_index(j)];
-    if (v >= 0.0) out[c] = v;
+    if (FixOptions::own_friction(v)) out[c] = v;
   }
 }
 

@@ -42,7 +42,8 @@ struct StepEffects {
   // Coulomb coefficient per type pair ((ntypes + 1)^2), null for none: the bodies rotate and
   // the solver must be one made for friction (core/laws/coulomb.h). I = inertia m r^2.
   const std::vector<double> *friction = nullptr;
-  // a wall's own coefficient by wall index (< 0: the type's), null when no wall has one
+  // a wall's own coefficient by wall index (FixOptions::kByType: the type's), null when no
+  // wall has one
   const std::vector<double> *wall_friction = nullptr;
   double inertia = 0.4;
   // rolling resistance per type pair, null for none (needs friction; core/laws/rolling.h)
@@ -76,7 +77,8 @@ class ContactStep : protected LAMMPS_NS::Pointers {
  private:
   Bodies build_bodies(bool needs_owner_map, const StepEffects &effects);
   void offer_rows(const Bodies &bodies, class RowSink &sink) const;
-  // by_wall[wall] of the wall rows first.. into out, where it is >= 0 (a wall's own value)
+  // by_wall[wall] of the wall rows first.. into out, where it is the wall's own value
+  // (FixOptions::own_friction: not kByType)
   void wall_values_of_rows(const std::vector<double> &by_wall, int first,
                            std::vector<double> &out);
   // table[type_i, type_j] of rows first.. into out (a wall row: the atom's type with itself)

@@ -79,6 +79,7 @@ void RegionWallSource::visit(const Bodies &, RowSink &sink) const
   const int nr = static_cast<int>(regions_.size());
   for (int k = 0; k < nr; ++k) {
     Region *region = regions_[k];
+    const bool moving = region->dynamic_check();    // once per region, not per contact
     for (int i = 0; i < atom->nlocal; ++i) {
       if (!(mask[i] & groupbit_)) continue;
       const int n = region->surface(x[i][0], x[i][1], x[i][2], radius[i] + skin);
@@ -94,7 +95,7 @@ void RegionWallSource::visit(const Bodies &, RowSink &sink) const
         // delx.. points from the surface to the centre: the row's normal is the opposite
         const Vec3 normal = -Vec3(ct.delx, ct.dely, ct.delz) / ct.r;
         const int w = first_wall_ + kFacesPerRegion * k + compat::region_face(ct);
-        if (!region->dynamic_check()) {
+        if (!moving) {
           sink.offer(i, wall_body(w), normal, ct.r - radius[i], radius[i]);
           continue;
         }

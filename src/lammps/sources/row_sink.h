@@ -42,11 +42,12 @@ class RowSink {
     offer_row(i, j, n, d, size, &u_wall);
   }
   // Moving walls: plane (null: every plane at rest) holds each plane's velocity; moving: some
-  // wall (plane or region) moves, so every row records its wall's velocity.
+  // wall (plane or region) moves (StepEffects::moving_obstacles), so every row records its
+  // wall's velocity.
   void set_wall_velocities(const std::vector<Vec3> *plane, bool moving)
   {
     plane_velocity_ = plane;
-    moving_ = moving || plane != nullptr;
+    moving_ = moving;
   }
   // Rows added since the last begin_*.
   int added() const { return added_; }
