@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # What accuracy costs with friction (issues 12 and 15, with doc/accuracy-vs-time.md): the
 # settling 3D pile of bench/compare/in.pile3d (nz layers of polydisperse spheres, h = 0.02,
-# walled box), apgd, tolerances 1e-2 .. 1e-6, frictionless / friction 0.5 / friction 0.5 +
-# rolling 0.1, each against its own reference at tol 1e-8: loop time, iterations per step,
+# walled box), tolerances 1e-2 .. 1e-6: frictionless with apgd and with cg (the default without
+# friction), friction 0.5 and friction 0.5 + rolling 0.1 with apgd (the default with friction),
+# each against its own reference (same case and solver) at tol 1e-8: loop time, iterations per step,
 # overlap at the end of the run (f_hc[7]; the deck's lattice starts with overlaps up to 3 % of
 # a diameter, which the overlap policy clears within about 80 steps) and the error of the final positions (RMS and largest
 # distance to the reference's, in sphere diameters). Writes bench/results/friction_tol.csv
@@ -20,18 +21,19 @@ sed -e 's/hardcontact solver ${solver} wall/hardcontact solver ${solver} tol ${t
     "$ROOT/bench/compare/in.pile3d" > "$DECK"
 CSV="$RESULTS/friction_tol.csv"
 echo "case,tol,spheres,steps,loop_s,iterations_per_step,max_iterations,end_overlap,maxiter_solves,rms_error_d,max_error_d,load1" > "$CSV"
-run() {    # run CASE TOL EXTRA -> log.CASE.TOL, final.CASE.TOL
-  local case="$1" tol="$2" extra="$3"
-  (cd "$WORK" && "$LMP" -in "$DECK" -var solver apgd -var nz "$NZ" -var n "$STEPS" -var tol "$tol" \
+run() {    # run CASE SOLVER TOL EXTRA -> log.CASE.TOL, final.CASE.TOL
+  local case="$1" solver="$2" tol="$3" extra="$4"
+  (cd "$WORK" && "$LMP" -in "$DECK" -var solver "$solver" -var nz "$NZ" -var n "$STEPS" -var tol "$tol" \
      -var extra "$extra" -var name "$case.$tol" -log "log.$case.$tol" -echo none > /dev/null)
 }
-for spec in "frictionless:" "friction_0.5:friction 0.5" "friction_0.5_rolling_0.1:friction 0.5 rolling 0.1"; do
-  case="${spec%%:*}"; extra="${spec#*:}"
-  echo "friction_tol: $case reference (tol $REF)"
-  run "$case" "$REF" "$extra"
+for spec in "frictionless:apgd:" "frictionless_cg:cg:" "friction_0.5:apgd:friction 0.5" \
+            "friction_0.5_rolling_0.1:apgd:friction 0.5 rolling 0.1"; do
+  case="${spec%%:*}"; rest="${spec#*:}"; solver="${rest%%:*}"; extra="${rest#*:}"
+  echo "friction_tol: $case ($solver) reference (tol $REF)"
+  run "$case" "$solver" "$REF" "$extra"
   for tol in $TOLS; do
-    echo "friction_tol: $case tol $tol"
-    run "$case" "$tol" "$extra"
+    echo "friction_tol: $case ($solver) tol $tol"
+    run "$case" "$solver" "$tol" "$extra"
     "$PY" - "$WORK" "$case" "$tol" "$REF" "$(cut -d' ' -f1 /proc/loadavg)" >> "$CSV" <<'PYEOF'
 import sys
 import numpy as np

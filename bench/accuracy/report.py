@@ -13,7 +13,9 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
-SOLVERS = ["apgd", "pgs", "uzawa"]
+SOLVERS = ["cg", "apgd", "pgs", "uzawa"]
+# the fix's default without friction, warm, tol 1e-4: "the default" of every finding
+DEFAULT = "cg"
 CPU = [""]    # "_cpu" when the timings are CPU times (machine under load), see main()
 
 
@@ -21,8 +23,8 @@ def T(key):
     """The timing column in use: wall clock, or CPU time of the run when the machine was
     loaded (set in main)."""
     return key + CPU[0]
-COLOR = {"apgd": "tab:blue", "pgs": "tab:green", "uzawa": "tab:orange"}
-MARK = {"apgd": "o", "pgs": "s", "uzawa": "^"}
+COLOR = {"cg": "tab:red", "apgd": "tab:blue", "pgs": "tab:green", "uzawa": "tab:orange"}
+MARK = {"cg": "D", "apgd": "o", "pgs": "s", "uzawa": "^"}
 ORDER = ["pile10", "pile30", "pile100", "crystal", "cluster", "pour"]
 TITLE = {"pile10": "pile, 10 layers", "pile30": "pile, 30 layers", "pile100": "pile, 100 layers",
          "crystal": "hexagonal crystal", "cluster": "cluster impact (6.3)", "pour": "pour into a box"}
@@ -101,7 +103,7 @@ def fig_overlap(matrix, soft, scenes, out):
             pts.append((x, y))
             ax.loglog([x], [y], MARK[r["solver"]], color=COLOR[r["solver"]], ms=6,
                       mfc=COLOR[r["solver"]] if r["warmstart"] == "yes" else "none")
-            if r["solver"] == "apgd" and r["warmstart"] == "yes" and r["tol"] == 1e-4:
+            if r["solver"] == DEFAULT and r["warmstart"] == "yes" and r["tol"] == 1e-4:
                 ax.loglog([x], [y], "*", color="k", ms=13, mfc="none")
         if pts:
             fr = pareto(pts)
@@ -125,7 +127,7 @@ def fig_overlap(matrix, soft, scenes, out):
         ax.axis("off")
     handles = [plt.Line2D([], [], marker=MARK[s], color=COLOR[s], ls="none", label=s) for s in SOLVERS]
     handles += [plt.Line2D([], [], marker="o", color="gray", mfc="none", ls="none", label="warmstart no"),
-                plt.Line2D([], [], marker="*", color="k", mfc="none", ms=12, ls="none", label="default (apgd 1e-4 warm)"),
+                plt.Line2D([], [], marker="*", color="k", mfc="none", ms=12, ls="none", label="default (%s 1e-4 warm)" % DEFAULT),
                 plt.Line2D([], [], color="k", ls="--", label="Pareto front (hardcontact)"),
                 plt.Line2D([], [], color="tab:red", marker="x", label="soft spheres (gran/hertz/history, dt = t_c/50)"),
                 plt.Line2D([], [], color="tab:red", marker="D", mfc="none", ls="none",
@@ -156,7 +158,7 @@ def fig_velocity(matrix, scenes, out):
             pts.append((x, y))
             ax.loglog([x], [y], MARK[r["solver"]], color=COLOR[r["solver"]], ms=6,
                       mfc=COLOR[r["solver"]] if r["warmstart"] == "yes" else "none")
-            if r["solver"] == "apgd" and r["warmstart"] == "yes" and r["tol"] == 1e-4:
+            if r["solver"] == DEFAULT and r["warmstart"] == "yes" and r["tol"] == 1e-4:
                 ax.loglog([x], [y], "*", color="k", ms=13, mfc="none")
         if pts:
             fr = pareto(pts)
@@ -351,7 +353,7 @@ def build_doc(res, figdir_rel, meta, matrix, soft, scenes, slide, figs):
       "benchmark's h = 1 ms at tol 1e-6; the cluster impact (h = 0.1 s, the paper's step) and "
       "the pour (h = 0.5 ms, impact speeds up to about 1 m/s) are measured over the whole "
       "event from t = 0.")
-    w("- Every combination solver (apgd, pgs, uzawa) x tol x warmstart (yes, no) runs the same "
+    w("- Every combination solver (cg, apgd, pgs, uzawa) x tol x warmstart (yes, no) runs the same "
       "window from the same start (a restart file, which carries the warm-start forces), "
       "default `maxiter` 10000. Tolerances are run from loose to tight; once a solver needs "
       "more than the time cap of one run (fix halt) or stops at maxiter in most steps, the "
@@ -417,7 +419,7 @@ def build_doc(res, figdir_rel, meta, matrix, soft, scenes, slide, figs):
         w("The same scenes with Debian's `lmp`: `pair_style gran/hertz/history kn NULL gn NULL "
           "0.0 1` (frictionless, like hardcontact), `fix wall/gran` with the same parameters, "
           "`fix nve/sphere`. The stiffness kn is chosen so that the largest overlap matches "
-          "what hardcontact (apgd, warm start) reached at the tolerance of the row: for the "
+          "what hardcontact (%s, warm start) reached at the tolerance of the row: for the " % DEFAULT +
           "piles, from the contact forces of the settled hard pile (Hertz: delta = (F / (kn "
           "sqrt(R)))^(2/3)), corrected after a first run (up to 3 runs at the default "
           "tolerance's overlap, the correction then used for every level); for the pour, from "
@@ -517,8 +519,10 @@ def friction_section(res, w):
     w("")
     w("`bench/run_friction_tol.sh` (a run of its own, not part of the matrix above): the settling "
       "3D pile of `bench/compare/in.pile3d` (%d polydisperse spheres, d 0.8-1.0, h = 0.02, %d steps, "
-      "walled box), apgd with warm start, frictionless, `friction 0.5` and `friction 0.5 rolling "
-      "0.1`, each tolerance against the same case at tol 1e-8. Position error: distance of each "
+      "walled box), warm start: frictionless with apgd and with cg (`frictionless cg`, the default "
+      "without friction), `friction 0.5` and `friction 0.5 rolling 0.1` with apgd (the default "
+      "with friction), each tolerance against the same case at tol 1e-8. Time / frictionless: "
+      "against the frictionless apgd run at that tolerance. Position error: distance of each "
       "sphere's final position to the reference's, in mean diameters (a settling pile amplifies "
       "any difference, so this is an upper bound on what the tolerance alone does). Loop times "
       "on one core, the 1-minute load at the end of each run in the last column."
@@ -532,6 +536,13 @@ def friction_section(res, w):
             r["case"].replace("_", " "), r["tol"], r["loop_s"], ratio, r["iterations_per_step"],
             r["max_iterations"], r["end_overlap"], r["rms_error_d"], r["max_error_d"], r["load1"]))
     w("")
+    sel = [r for r in rows if r["case"] == "frictionless_cg" and base.get(r["tol"])]
+    if sel:
+        w("- cg (the default without friction) takes %.2f-%.2f x apgd's time on the frictionless "
+          "pile over tol %g..%g (%.0f-%.0f iterations per step)." % (
+              min(r["loop_s"] / base[r["tol"]] for r in sel), max(r["loop_s"] / base[r["tol"]] for r in sel),
+              max(r["tol"] for r in sel), min(r["tol"] for r in sel),
+              min(r["iterations_per_step"] for r in sel), max(r["iterations_per_step"] for r in sel)))
     for case in ("friction_0.5", "friction_0.5_rolling_0.1"):
         sel = [r for r in rows if r["case"] == case and base.get(r["tol"])]
         if not sel:
@@ -557,7 +568,7 @@ def summary(matrix, soft, scenes, tols):
         parts = []
         for s in present:
             b = best_at(matrix, s, limit)
-            d = find(matrix, s, "apgd", "yes", 1e-4)
+            d = find(matrix, s, DEFAULT, "yes", 1e-4)
             if b is None:
                 parts.append("%s: none" % s)
                 continue
@@ -566,24 +577,24 @@ def summary(matrix, soft, scenes, tols):
     # default vs best at its own accuracy
     parts = []
     for s in present:
-        d = find(matrix, s, "apgd", "yes", 1e-4)
+        d = find(matrix, s, DEFAULT, "yes", 1e-4)
         if d is None or not ok(d):
             continue
         b = best_at(matrix, s, max(d["overlap_rel_max"], 1e-4) * 1.01)
         if b:
             parts.append("%s %.1fx" % (s, d[T("t_step")] / b[T("t_step")]))
     if parts:
-        w("- The default (apgd, tol 1e-4, warm start) against the fastest combination reaching "
+        w("- The default (%s, tol 1e-4, warm start) against the fastest combination reaching " % DEFAULT +
           "the same overlap (time ratio, 1.0x = the default is the fastest): %s." % ", ".join(parts))
     # warm start effect
     parts = []
     for s in present:
         for t in (1e-4,):
-            a, b = find(matrix, s, "apgd", "yes", t), find(matrix, s, "apgd", "no", t)
+            a, b = find(matrix, s, DEFAULT, "yes", t), find(matrix, s, DEFAULT, "no", t)
             if a and b and ok(a) and ok(b):
                 parts.append("%s %.0f -> %.0f it (%.2gx time)" % (s, b["iter_mean"], a["iter_mean"], a[T("t_step")] / b[T("t_step")]))
     if parts:
-        w("- Warm start, apgd at tol 1e-4 (iterations per step cold -> warm): %s." % "; ".join(parts))
+        w("- Warm start, %s at tol 1e-4 (iterations per step cold -> warm): %s." % (DEFAULT, "; ".join(parts)))
     # uzawa
     parts = []
     for s in present:
@@ -597,12 +608,12 @@ def summary(matrix, soft, scenes, tols):
     # velocity error of one step at the default, piles
     parts = []
     for s in present:
-        r = find(matrix, s, "apgd", "yes", 1e-4)
-        c = find(matrix, s, "apgd", "no", 1e-4)
+        r = find(matrix, s, DEFAULT, "yes", 1e-4)
+        c = find(matrix, s, DEFAULT, "no", 1e-4)
         if r and num(r, "vel_err") is not None and c and num(c, "vel_err") is not None:
             parts.append("%s %.1e (cold start %.1e)" % (s, r["vel_err"], c["vel_err"]))
     if parts:
-        w("- Velocity error of one step at the default (apgd, tol 1e-4, warm start; max |v - v_exact| "
+        w("- Velocity error of one step at the default (%s, tol 1e-4, warm start; max |v - v_exact| " % DEFAULT +
           "/ max |u_free|): %s." % "; ".join(parts))
     # unconverged solves: overlap far beyond the residual
     bad = [r for r in matrix if ok(r) and r["maxiter_hits"] > 0 and num(r, "overlap_rel_max") is not None
@@ -640,8 +651,8 @@ def summary(matrix, soft, scenes, tols):
                                                   " (window)" if win else ("" if reached else " (soft overlap %.1e: not matched)" % r["overlap_rel_max"])))
     if parts:
         w("- Soft spheres at the same largest overlap need this many times the wall time of "
-          "hardcontact (apgd, warm start) per simulated second: %s (see the soft-sphere table "
-          "for which runs are full runs and which are windows)." % "; ".join(parts))
+          "hardcontact (%s, warm start) per simulated second: %s (see the soft-sphere table "
+          "for which runs are full runs and which are windows)." % (DEFAULT, "; ".join(parts)))
     w("")
     return S
 
