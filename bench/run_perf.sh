@@ -13,7 +13,8 @@
 # it while measuring), HARDCONTACT_SOURCE_DESC (what that launcher was built from; default:
 # this tree's commit), SOFT_LMP (default /usr/bin/lmp), BENCH_WORKDIR (scratch, default
 # bench/work: data files, logs, restarts; not committed), PERF_ONLY (subset of
-# heights,tray,throughput,tts).
+# heights,tray,throughput,tts,big: only those parts run, the others' rows of the last runs are
+# kept; big, the 64,000-sphere pile, runs only when named: about 15 minutes).
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh" "perf-" "$@"
 
@@ -35,8 +36,12 @@ cp "$WORK/run_log.txt" "$RESULTS/perf_run_log.txt"
 
 LAMMPS_VERSION="$(echo "info" | "$SOFT_LMP" 2>/dev/null | sed -n 's/^LAMMPS (\(.*\))$/\1/p' | head -1)"
 CPU="$(sed -n 's/^model name[[:space:]]*: //p' /proc/cpuinfo | head -1)"
+# a full run describes the machine for the whole report; a partial one (PERF_ONLY) its part
+MACHINE="$RESULTS/perf_machine.csv"
+[ -n "${PERF_ONLY:-}" ] && MACHINE="$RESULTS/perf_machine_${PERF_ONLY//,/_}.csv"
 {
   echo "key,value"
+  echo "only,${PERF_ONLY:-all}"
   echo "mode,$MODE"
   echo "date,$(date -u '+%Y-%m-%d %H:%M UTC')"
   echo "nproc,$(nproc)"
@@ -47,7 +52,7 @@ CPU="$(sed -n 's/^model name[[:space:]]*: //p' /proc/cpuinfo | head -1)"
   echo "hardcontact,$GIT"
   echo "launcher,$LMP"
   echo "minutes,$(( (SECONDS - T0) / 60 ))"
-} > "$RESULTS/perf_machine.csv"
+} > "$MACHINE"
 "$PY" "$ROOT/bench/perf/report.py" --results "$RESULTS" --doc "$ROOT/doc/performance.md" \
   --figures "$ROOT/doc/figures"
 echo "performance benchmark ($MODE): $(( (SECONDS - T0) / 60 )) min; doc/performance.md"

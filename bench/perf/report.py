@@ -275,7 +275,7 @@ class Report:
         self.w("## 3. Throughput: contact-iterations per second", "",
                "Contact-iterations per second = sum over the steps of (rows x iterations) / the `Modify` time "
                "of LAMMPS's timing breakdown (the fix's whole step: candidates, solve, update; the loop "
-               "time is within a few % of it, see the last column). Rows are counted two ways: the "
+               "time is within a few %% of it, see the last column). Rows are counted two ways: the "
                "candidate rows `f_ID[3]` (the rows of the problem; the headline figure, as in the "
                "accuracy report) and the active rows `f_ID[4]` (force > 0). `%s` on the piles of "
                "every series, one rank; also `apgd`, `pgs` and `uzawa` on the height series (their per-iteration "
