@@ -17,7 +17,9 @@
 // Every step decreases phi (a projected step is kept only when it decreases phi at least as
 // much as the step to the first row's bound), and a direction that stops descending restarts
 // CG from the preconditioned gradient: the method cannot diverge. Runs in the variables
-// x = D^1/2 mu, D = diag(A) (Jacobi), so mass and size ratios do not slow it.
+// x = D^1/2 mu, D = diag(A) (Jacobi), so every row's scale is its own: a heavy sphere on light
+// ones costs far less than with one global step (bench/perf's tray at mass ratio 1000: 33
+// it/step against apgd's 509 from the same state).
 #pragma once
 
 #include "../laws/normal.h"
