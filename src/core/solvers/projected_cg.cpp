@@ -76,16 +76,23 @@ void ProjectedCg::index_rows()
   touched_.clear();
 }
 
-void ProjectedCg::refresh(const std::vector<double> &mu)
+template <class Update>
+void ProjectedCg::refresh_with(const std::vector<double> &mu, Update &&update)
 {
   const ContactProblem &p = op_.problem();
   double r = 0.0, num = 0.0;
   for (const int c : set_.rows()) {
+    update(c);
     r = std::max(r, set_.violation(c, &g_[c], &mu[c], Coefficients{}));
     if (p.counted[c] && free(c, mu)) num += g_[c] * inv_d_[c] * q_[c];
   }
   residual_ = r;
   gamma_num_ = op_.ops().sum_all(num);
+}
+
+void ProjectedCg::refresh(const std::vector<double> &mu)
+{
+  refresh_with(mu, [](int) {});
 }
 
 double ProjectedCg::product(const std::vector<double> &mu, double gamma)
@@ -120,29 +127,21 @@ double ProjectedCg::product(const std::vector<double> &mu, double gamma)
 
 void ProjectedCg::move(double a, std::vector<double> &mu, std::vector<Vec3> &u)
 {
-  for (const int c : set_.rows()) {
-    mu[c] -= a * dir_[c];
-    g_[c] -= a * q_[c];
-  }
-  const size_t n = w_.size();
-  for (size_t b = 0; b < n; ++b) u[b] -= a * w_[b];
+  for (const int c : set_.rows()) move_row(c, a, mu);
+  move_bodies(a, u);
 }
 
 // move() and refresh() in one pass over the rows (the CG step's common case)
 void ProjectedCg::move_and_refresh(double a, std::vector<double> &mu, std::vector<Vec3> &u)
 {
-  const ContactProblem &p = op_.problem();
-  double r = 0.0, num = 0.0;
-  for (const int c : set_.rows()) {
-    mu[c] -= a * dir_[c];
-    g_[c] -= a * q_[c];
-    r = std::max(r, set_.violation(c, &g_[c], &mu[c], Coefficients{}));
-    if (p.counted[c] && free(c, mu)) num += g_[c] * inv_d_[c] * q_[c];
-  }
+  refresh_with(mu, [&](int c) { move_row(c, a, mu); });
+  move_bodies(a, u);
+}
+
+void ProjectedCg::move_bodies(double a, std::vector<Vec3> &u) const
+{
   const size_t n = w_.size();
   for (size_t b = 0; b < n; ++b) u[b] -= a * w_[b];
-  residual_ = r;
-  gamma_num_ = op_.ops().sum_all(num);
 }
 
 // mu - a dir + clip with clip_c = a dir_c - mu_c on the rows that would go below 0 (they land

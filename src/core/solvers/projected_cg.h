@@ -44,6 +44,13 @@ class ProjectedCg : public IterativeSolver<NormalLaw> {
   // mu -= a dir_, g -= a q_, u -= a w_ (ghosts included: w_ was forwarded).
   void move(double a, std::vector<double> &mu, std::vector<Vec3> &u);
   void move_and_refresh(double a, std::vector<double> &mu, std::vector<Vec3> &u);
+  // one row of move(), and its bodies' part (u -= a w_, ghosts included)
+  void move_row(int c, double a, std::vector<double> &mu)
+  {
+    mu[c] -= a * dir_[c];
+    g_[c] -= a * q_[c];
+  }
+  void move_bodies(double a, std::vector<Vec3> &u) const;
   // The projected step mu <- max(0, mu - a dir_): the clipped rows' correction, its velocity
   // change and gaps computed sparsely (only the rows that share a body with a clipped row).
   // Taken if it lowers phi at least by `floor` (the decrease of the step to the bound);
@@ -51,6 +58,9 @@ class ProjectedCg : public IterativeSolver<NormalLaw> {
   bool projected_step(double a, double floor, std::vector<double> &mu, std::vector<Vec3> &u);
   // After mu changed: residual_ and gamma's numerator (D^-1 g_new).A dir over free rows.
   void refresh(const std::vector<double> &mu);
+  // the same with each row first updated by update(c) (a move fused into the pass)
+  template <class Update>
+  void refresh_with(const std::vector<double> &mu, Update &&update);
   // Rows per body over the working set (CSR), for the sparse correction.
   void index_rows();
 
