@@ -15,6 +15,9 @@ struct SolverSettings {
   double tol = 1.0e-4;    // stop when residual() <= tol (relative to each row's scale, residual.h)
   int maxiter = 10000;    // cap on multiplier updates per solve
   double rho = 0.0;       // Uzawa step; 0 = 1 / the Gershgorin bound each solve (dual_operator.h)
+  // Developers: when set, an iterative solver of the frictionless law writes the problem it
+  // receives to this file before it starts (problem_dump.h); empty = nothing written.
+  std::string dump_problem;
 };
 
 struct SolveReport {
@@ -23,6 +26,7 @@ struct SolveReport {
   bool converged = false;
   double rho = 0.0;    // step actually used (0 if the solver has none)
   double speed_scale = 0.0;    // V of the row scales (residual.h)
+  bool dump_failed = false;    // SolverSettings::dump_problem could not be written
 };
 
 // What a solver needs from the host, asked of the object instead of compared by name.

@@ -3,6 +3,9 @@
 // integrate.* (eq. 19 and the skin), outputs.*, contact_history.*.
 #include "fix_hardcontact.h"
 
+#include <cstdlib>
+#include <string>
+
 #include "atom.h"
 #include "comm.h"
 #include "domain.h"
@@ -101,6 +104,15 @@ FixHardContact::FixHardContact(LAMMPS *lmp, int narg, char **arg) :
   atom->add_callback(hardcontact::compat::kAtomGrowCallback);
   atom->add_callback(hardcontact::compat::kAtomRestartCallback);
   for (int i = 0; i < atom->nlocal; ++i) outputs_.clear_per_atom(i);
+
+  if (const char *prefix = std::getenv("HARDCONTACT_DUMP_PROBLEMS")) {
+    dump_prefix_ = prefix;
+    if (!dump_prefix_.empty() && comm->me == 0)
+      hardcontact::compat::warning(error, FLERR,
+                                   "Fix hardcontact writes every step's problem to {}.<step> "
+                                   "(HARDCONTACT_DUMP_PROBLEMS is set; frictionless solves only)",
+                                   dump_prefix_);
+  }
 }
 
 FixHardContact::~FixHardContact()
@@ -185,13 +197,32 @@ void FixHardContact::initial_integrate(int)
     effects.inertia = options_.disc ? 0.5 : 0.4;
   }
   const hardcontact::StepResult result =
-      step_.solve(*solver_, options_.settings, options_.warmstart ? &history_ : nullptr, effects);
+      dump_prefix_.empty() ? step_.solve(*solver_, options_.settings,
+                                         options_.warmstart ? &history_ : nullptr, effects)
+                           : solve_and_dump(effects);
   walls_.commit(update->dt);    // the outputs measure q^{n+1} against the walls at t^{n+1}
   if (options_.warmstart) history_resized();
   outputs_.record_step(result, step_.problem(), step_.mu(), step_.block(), step_.u(),
                        obstacles_, options_.settings);
   const int spins = step_.block() > 1 ? step_.problem().n_bodies() : -1;
   if (integrate_.move(step_.u(), spins)) next_reneighbor = update->ntimestep;
+}
+
+// The step with the developers' dump of its problem (core/problem_dump.h): prefix.<step>, and
+// .<rank> after it when several processes run (each writes its own rows and bodies).
+hardcontact::StepResult FixHardContact::solve_and_dump(const hardcontact::StepEffects &effects)
+{
+  hardcontact::SolverSettings settings = options_.settings;
+  settings.dump_problem = dump_prefix_ + "." + std::to_string(update->ntimestep);
+  if (comm->nprocs > 1) settings.dump_problem += "." + std::to_string(comm->me);
+  const hardcontact::StepResult result =
+      step_.solve(*solver_, settings, options_.warmstart ? &history_ : nullptr, effects);
+  if (result.report.dump_failed)
+    hardcontact::compat::error_one(lmp->error, FLERR,
+                                   "Fix hardcontact cannot write {} (HARDCONTACT_DUMP_PROBLEMS): "
+                                   "set it to a prefix in a writable directory, or unset it",
+                                   settings.dump_problem);
+  return result;
 }
 
 void FixHardContact::post_run()

@@ -73,8 +73,12 @@ class FixHardContact : public Fix {
   // by wall index: a wall's own friction (wall ... friction mu), FixOptions::kByType for the
   // type's; empty when no wall has its own
   std::vector<double> wall_friction_;
+  // HARDCONTACT_DUMP_PROBLEMS: developers' file prefix for every step's problem
+  // (core/problem_dump.h), empty when unset
+  std::string dump_prefix_;
 
   void history_resized();
+  hardcontact::StepResult solve_and_dump(const hardcontact::StepEffects &effects);
 };
 
 }    // namespace LAMMPS_NS

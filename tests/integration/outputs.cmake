@@ -16,3 +16,10 @@ endforeach()
 # the fix bugs these scripts once documented are fixed: keep them as regression tests
 hardcontact_deck_test(NAME outputs_fixed_bugs_np1 SCRIPT integration/test_outputs.py NP 1
                       LABELS outputs ARGS --known-bugs TIMEOUT 600)
+
+# the developers' problem dump (HARDCONTACT_DUMP_PROBLEMS): the files rebuild the problem the
+# solver was given, its solution is LAMMPS's step; an unwritable prefix is an ERROR
+foreach(_np 1 2 4)
+  hardcontact_deck_test(NAME problem_dump_np${_np} SCRIPT integration/test_problem_dump.py
+                        NP ${_np} LABELS outputs TIMEOUT 180 HOSTS launcher modern)
+endforeach()

@@ -6,6 +6,7 @@
 #pragma once
 
 #include "../dual_operator.h"
+#include "../problem_dump.h"
 #include "../residual.h"
 #include "../solver.h"
 #include "../working_set.h"
@@ -28,6 +29,9 @@ class IterativeSolver : public Solver {
     g_.resize(static_cast<size_t>(B) * nc);
     op_.bind(p, ops);
     set_.init(p, mu, s.tol, ops);
+    bool dump_failed = false;
+    if constexpr (B == 1)
+      if (!s.dump_problem.empty()) dump_failed = !write_problem(s.dump_problem, p, set_.scales(), mu, s.tol);
     if constexpr (B > 1) {
       start_shifts(mu, u);
       downward_ = false;
@@ -37,6 +41,7 @@ class IterativeSolver : public Solver {
     start(s, mu, u);
 
     SolveReport report;
+    report.dump_failed = dump_failed;
     for (int k = 0;; ++k) {
       report.iterations = k;
       report.residual = ops.max_all(set_residual(mu, u));
