@@ -29,9 +29,11 @@ class IterativeSolver : public Solver {
     g_.resize(static_cast<size_t>(B) * nc);
     op_.bind(p, ops);
     set_.init(p, mu, s.tol, ops);
-    bool dump_failed = false;
-    if constexpr (B == 1)
-      if (!s.dump_problem.empty()) dump_failed = !write_problem(s.dump_problem, p, set_.scales(), mu, s.tol);
+    bool dump_failed = false;    // developers' dump (problem_dump.h): the law of eq. 15 only
+    if constexpr (B == 1) {
+      if (!s.dump_problem.empty())
+        dump_failed = !write_problem(s.dump_problem, p, set_.scales(), mu, s.tol);
+    }
     if constexpr (B > 1) {
       start_shifts(mu, u);
       downward_ = false;
