@@ -1,10 +1,11 @@
 #!/usr/bin/env bash
 # Scale (issue 15, target 5): bench/scale/in.scale3d with 1e4, 1e5 and 1e6 spheres (a simple
 # cubic block of polydisperse spheres falling into a walled box and starting to settle), one
-# process, apgd at the default tolerance. Per size: setup and loop time, time per step, the
-# solver iterations per step and rows at the end, the peak resident memory of the process and
-# per sphere, and LAMMPS's own per-rank memory figure (which includes the fix's
-# memory_usage()). Writes bench/results/scale.csv and prints a markdown table.
+# process, the default solver (cg without friction) at the default tolerance. Per size: setup
+# and loop time, time per step, the solver iterations per step and rows at the end, the peak
+# resident memory of the process and per sphere, and LAMMPS's own per-rank memory figure (which
+# includes the fix's memory_usage()). Writes bench/results/scale.csv and prints a markdown
+# table.
 #   bench/run_scale.sh [--quick]      (--quick: 1e4 and 1e5 only)
 set -euo pipefail
 # shellcheck source=common.sh
