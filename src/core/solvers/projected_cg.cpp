@@ -19,19 +19,18 @@ void ProjectedCg::start(const SolverSettings &, std::vector<double> &mu, std::ve
   const ContactProblem &p = op_.problem();
   const int nc = p.n_contacts();
   inv_d_.resize(nc);
+  double dmax = 0.0;    // over the working set
   for (int c = 0; c < nc; ++c) {
     const double d = op_.diagonal(c);
     inv_d_[c] = d > 0.0 ? 1.0 / d : 1.0;    // a row no body can move: any scale
+    if (set_.contains(c)) dmax = std::max(dmax, d);
   }
   for (auto *v : {&dir_, &q_, &clip_, &qc_}) v->assign(nc, 0.0);
   near_mark_.assign(nc, 0);
+  body_mark_.assign(p.n_owned, 0);
   wc_.assign(p.n_dof(), Vec3::Zero());
   op_.velocities<1>(set_.rows(), mu, u);
-  double dmax = 0.0;
-  for (const int c : set_.rows()) {
-    g_[c] = op_.gap(c, u);
-    dmax = std::max(dmax, op_.diagonal(c));
-  }
+  for (const int c : set_.rows()) g_[c] = op_.gap(c, u);
   index_rows();
   refresh(mu);
   cg_ = false;
@@ -161,11 +160,20 @@ bool ProjectedCg::projected_step(double a, double floor, std::vector<double> &mu
       op_.apply(c, clip_[c], wc_);
     }
   op_.forward(wc_);
-  // bodies the clip moved: owned ones from the clipped rows here, ghosts from their owners
+  // bodies the clip moved (apply() changes only owned bodies' linear velocities): owned ones
+  // from the clipped rows, ghosts (from their owners) by a scan of the ghost range only
   touched_.clear();
+  const auto moved = [&](int b) { return wc_[b] != Vec3::Zero(); };
+  for (const int c : clipped_)
+    for (const int b : {p.body_i[c], p.body_j[c]})
+      if (!is_wall(b) && b < p.n_owned && !body_mark_[b] && moved(b)) {
+        body_mark_[b] = 1;
+        touched_.push_back(b);
+      }
+  for (const int b : touched_) body_mark_[b] = 0;
   const int nb = p.n_bodies();
-  for (int b = 0; b < nb; ++b)
-    if (wc_[b][0] != 0.0 || wc_[b][1] != 0.0 || wc_[b][2] != 0.0) touched_.push_back(b);
+  for (int b = p.n_owned; b < nb; ++b)
+    if (moved(b)) touched_.push_back(b);
   near_.clear();
   for (const int b : touched_)
     for (int k = row_start_[b]; k < row_start_[b + 1]; ++k) {

@@ -76,6 +76,7 @@ class ProjectedCg : public IterativeSolver<NormalLaw> {
   std::vector<int> near_;                // rows sharing a body with a clipped row
   std::vector<double> qc_;               // A clip_ on near_ rows (per row, 0 elsewhere)
   std::vector<char> near_mark_;
+  std::vector<char> body_mark_;          // per owned body: already in touched_
   std::vector<int> row_start_, row_list_;    // rows of body b: row_list_[row_start_[b]..+1)
   double sums_[2] = {0.0, 0.0};
   double residual_ = 0.0, gamma_num_ = 0.0, pq_ = 0.0;
