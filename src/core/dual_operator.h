@@ -61,14 +61,24 @@ class DualOperator {
   }
   // w = h M^-1 G^T m over the listed rows, from rest (no u_free): the velocity change of the
   // impulses m alone, so that h G_c w is A m (Krylov solvers). Ghosts from their owners.
+  // moved: when given, the owned bodies the rows touch, and w must be 0 on every other owned
+  // body (the caller zeroed it once): only these are cleared, so a product costs the rows and
+  // their bodies, not every body (a bed forming under a million falling spheres).
   template <class MOf>
-  void impulse_velocities_with(const std::vector<int> &rows, MOf &&m_of, std::vector<Vec3> &w) const
+  void impulse_velocities_with(const std::vector<int> &rows, MOf &&m_of, std::vector<Vec3> &w,
+                               const std::vector<int> *moved = nullptr) const
   {
     const ContactProblem &p = *p_;
     w.resize(p.n_dof());
-    std::fill(w.begin(), w.begin() + p.n_owned, Vec3::Zero());
-    if (p.rotates())
-      std::fill(w.begin() + p.n_bodies(), w.begin() + p.n_bodies() + p.n_owned, Vec3::Zero());
+    const int nb = p.n_bodies();
+    if (moved == nullptr) {
+      std::fill(w.begin(), w.begin() + p.n_owned, Vec3::Zero());
+      if (p.rotates()) std::fill(w.begin() + nb, w.begin() + nb + p.n_owned, Vec3::Zero());
+    } else {
+      for (const int b : *moved) w[b] = Vec3::Zero();
+      if (p.rotates())
+        for (const int b : *moved) w[nb + b] = Vec3::Zero();
+    }
     for (const int c : rows) {
       const double m = m_of(c);
       if (m != 0.0) apply(c, m, w);

@@ -29,6 +29,7 @@ void ProjectedCg::start(const SolverSettings &, std::vector<double> &mu, std::ve
   near_mark_.assign(nc, 0);
   body_mark_.assign(p.n_owned, 0);
   wc_.assign(p.n_dof(), Vec3::Zero());
+  w_.assign(p.n_dof(), Vec3::Zero());    // products clear only the bodies of set rows (moved_)
   op_.velocities<1>(set_.rows(), mu, u);
   for (const int c : set_.rows()) g_[c] = op_.gap(c, u);
   index_rows();
@@ -65,6 +66,9 @@ void ProjectedCg::index_rows()
     if (!is_wall(p.body_j[c])) ++row_start_[p.body_j[c] + 1];
   }
   for (int b = 0; b < nb; ++b) row_start_[b + 1] += row_start_[b];
+  moved_.clear();
+  for (int b = 0; b < p.n_owned; ++b)
+    if (row_start_[b + 1] > row_start_[b]) moved_.push_back(b);
   row_list_.resize(row_start_[nb]);
   std::vector<int> &at = touched_;    // scratch: the next free place per body
   at.assign(row_start_.begin(), row_start_.end() - 1);
@@ -104,7 +108,7 @@ double ProjectedCg::product(const std::vector<double> &mu, double gamma)
         dir_[c] = free(c, mu) ? g_[c] * inv_d_[c] - gamma * dir_[c] : 0.0;
         return dir_[c];
       },
-      w_);
+      w_, &moved_);
   double s[2] = {0.0, 0.0};
   double ratio = 0.0;
   for (const int c : rows) {
@@ -139,8 +143,15 @@ void ProjectedCg::move_and_refresh(double a, std::vector<double> &mu, std::vecto
 
 void ProjectedCg::move_bodies(double a, std::vector<Vec3> &u) const
 {
-  const size_t n = w_.size();
-  for (size_t b = 0; b < n; ++b) u[b] -= a * w_[b];
+  // w_ is 0 on the owned bodies no row of the set touches (zeroed in start, never applied)
+  const ContactProblem &p = op_.problem();
+  const int nb = p.n_bodies();
+  for (const int b : moved_) u[b] -= a * w_[b];
+  for (int b = p.n_owned; b < nb; ++b) u[b] -= a * w_[b];
+  if (p.rotates()) {
+    for (const int b : moved_) u[nb + b] -= a * w_[nb + b];
+    for (int b = p.n_owned; b < nb; ++b) u[nb + b] -= a * w_[nb + b];
+  }
 }
 
 // mu - a dir + clip with clip_c = a dir_c - mu_c on the rows that would go below 0 (they land

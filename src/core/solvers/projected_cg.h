@@ -61,13 +61,14 @@ class ProjectedCg : public IterativeSolver<NormalLaw> {
   // the same with each row first updated by update(c) (a move fused into the pass)
   template <class Update>
   void refresh_with(const std::vector<double> &mu, Update &&update);
-  // Rows per body over the working set (CSR), for the sparse correction.
+  // Rows per body over the working set (CSR), for the sparse correction; moved_ from it.
   void index_rows();
 
   std::vector<double> inv_d_;  // 1 / diag(A) per row (1 for a row no body can move)
   std::vector<double> dir_;    // CG direction in mu's variables (D^-1/2 p, p in x)
   std::vector<double> q_;      // A dir_
   std::vector<Vec3> w_;        // the velocity change of dir_
+  std::vector<int> moved_;     // owned bodies with rows in the set: where w_ can be nonzero
   // sparse correction of a projected step
   std::vector<int> clipped_;             // rows clipped (local)
   std::vector<double> clip_;             // per row: the force given back (0 elsewhere)
