@@ -3,7 +3,7 @@ problems dumped by fix hardcontact (HARDCONTACT_DUMP_PROBLEMS), the exact soluti
 spectrum of the Jacobi-scaled operator on its pushing rows, and how many iterations a linear
 preconditioned CG needs on those rows - the solve `cg` does once its free rows are the right
 ones - from the warm start to the fix's own stopping test (|g_c| <= tol x scale_c), with:
-  jacobi     D^-1 (what `cg` uses)
+  jacobi     D^-1 (what `cg` uses); also from a start extrapolated from the last two steps
   sgs        symmetric Gauss-Seidel (one forward and one backward sweep)
   two-level  sgs + an exact coarse solve on aggregates of strongly coupled rows
   multilevel smoothed aggregation, V(1,1) cycle with sgs smoothing
@@ -220,6 +220,14 @@ def main():
                                   n[:, 0] * n[:, 2], n[:, 1] * n[:, 2]])
         st, sizes_st = multigrid(A, 1, True, candidates=stress)
         it["stress"] = pcg(A, rhs, x0, scale, tol, st)
+        # the warm start extrapolated from the two last steps' forces (the base's start is the
+        # solution two steps back when the base is the step before)
+        it["extrapolated"] = -1
+        if step == base_step + 1:
+            start_b = {k: m for k, m in zip(B["keys"], B["mu0"])}
+            older = np.array([start_b.get(k, 0.0) for k in keys])
+            ext = np.maximum(0.0, 2.0 * x0 - older)
+            it["extrapolated"] = pcg(A, rhs, ext, scale, tol, lambda r: r / d)
         it["old_factor"] = pcg(A, rhs, x0, scale, tol, old_factor)
         row = dict(label=a.label, step=step, bodies=P["n_bodies"], rows=len(P["b"]),
                    pushing=int(free.sum()), rows_new_since_base=int((~have).sum()),
@@ -229,7 +237,7 @@ def main():
                    lambda_max=large, condition=large / small[0],
                    eig_below_2x_min=int(np.sum(small < 2 * small[0])),
                    cg_solver=cg_iterations(a.log, step), pcg_jacobi=it["jacobi"],
-                   pcg_sgs=it["sgs"], pcg_two_level=it["two_level"],
+                   pcg_jacobi_extrapolated=it["extrapolated"], pcg_sgs=it["sgs"], pcg_two_level=it["two_level"],
                    two_level_sizes="/".join(map(str, sizes2)), pcg_multilevel=it["multilevel"],
                    multilevel_sizes="/".join(map(str, sizes)), pcg_stress=it["stress"],
                    stress_sizes="/".join(map(str, sizes_st)), pcg_old_factor=it["old_factor"],

@@ -12,7 +12,8 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
-COLUMNS = [("cg_solver", "cg (the solver)"), ("pcg_jacobi", "jacobi"), ("pcg_sgs", "sgs"),
+COLUMNS = [("cg_solver", "cg (the solver)"), ("pcg_jacobi", "jacobi"),
+           ("pcg_jacobi_extrapolated", "jacobi, extrapolated start"), ("pcg_sgs", "sgs"),
            ("pcg_two_level", "two-level"), ("pcg_multilevel", "multilevel"),
            ("pcg_stress", "stress two-level"), ("pcg_old_factor", "old factor")]
 
@@ -28,7 +29,9 @@ def main():
     print("|---" * (6 + len(COLUMNS)) + "|")
     for r in rows:
         # 5000 = the cap of analyze.pcg: did not converge
-        its = [r[k] if int(r[k]) < 5000 else "no conv." for k, _ in COLUMNS]
+        # -1: not measured (the extrapolation needs the step before)
+        its = [r[k] if 0 <= int(r[k]) < 5000 else "no conv." if int(r[k]) >= 5000 else "-"
+               for k, _ in COLUMNS]
         print("| %s, %s | %s (%s) | %.2g (%.0f %%) | %.2g | %.3g | %s | %s, %s |" % (
             r["label"], r["step"], r["pushing"], r["rows_new_since_base"],
             float(r["warm_residual_over_tol"]), 100 * float(r["warm_force_error"]),
@@ -51,7 +54,7 @@ def main():
     x = np.arange(len(rows))
     w = 0.8 / len(COLUMNS)
     for j, (k, name) in enumerate(COLUMNS):
-        v = np.array([min(float(r[k]), 1000.0) for r in rows])
+        v = np.array([min(max(float(r[k]), 0.0), 1000.0) for r in rows])
         ax[1].bar(x + (j - len(COLUMNS) / 2 + 0.5) * w, v, w, label=name)
     ax[1].set_xticks(x)
     ax[1].set_xticklabels(labels, rotation=30, fontsize=7, ha="right")
