@@ -5,6 +5,7 @@
 #pragma once
 
 #include "contact_problem.h"
+#include "container_bytes.h"
 #include "distributed_ops.h"
 
 #include <Eigen/SparseCore>
@@ -267,6 +268,7 @@ class DualOperator {
 
   // The normal target shift of each row (friction, laws/coulomb.h): 0 after bind().
   std::vector<double> &shift() { return shift_; }
+  double memory_usage() const { return bytes_of(deg_, arm2_, shift_); }
   double shift(int c) const { return shift_[c]; }
 
  private:

@@ -4,6 +4,7 @@
 
 #include "contact_problem.h"
 #include "distributed_ops.h"
+#include "container_bytes.h"
 
 #include <memory>
 #include <string>
@@ -39,6 +40,9 @@ class Solver {
  public:
   virtual ~Solver() = default;
   virtual SolverTraits traits() const { return {}; }
+  // Bytes the solver keeps between solves (its per-row and per-body scratch), for the fix's
+  // memory_usage() (LAMMPS's per-rank memory line).
+  virtual double memory_usage() const { return 0.0; }
   // mu: multipliers (contact forces, eq. 16), in: start values (resized to the rows, missing
   // ones 0), out: result. u: out, velocities of all bodies, ghosts included.
   virtual SolveReport solve(const ContactProblem &p, const SolverSettings &s,

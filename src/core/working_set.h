@@ -7,6 +7,7 @@
 
 #include "contact_problem.h"
 #include "distributed_ops.h"
+#include "container_bytes.h"
 #include "residual.h"
 
 #include <vector>
@@ -46,6 +47,7 @@ class WorkingSet {
     return Law::violation(g, m, k, scale_[c]);
   }
   double scale(int c) const { return scale_[c]; }
+  double memory_usage() const { return bytes_of(rows_, member_, scale_); }
   const std::vector<double> &scales() const { return scale_; }
   double speed_scale() const { return speed_scale_; }
 

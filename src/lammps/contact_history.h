@@ -53,6 +53,11 @@ class ContactHistory {
   int unpack(int i, const double *buf);
   int packed_size(int i) const { return 1 + stride() * count(i); }
   int max_packed_size() const { return 1 + stride() * capacity_; }
+  // bytes of the per-atom table (nmax rows of 1 + stride() x capacity doubles)
+  double memory_usage() const
+  {
+    return static_cast<double>(nmax_) * (sizeof(double *) + sizeof(double) * (1 + stride() * capacity_));
+  }
 
  private:
   int stride() const { return 1 + k_; }

@@ -237,7 +237,8 @@ double FixHardContact::compute_vector(int n)
 
 double FixHardContact::memory_usage()
 {
-  return outputs_.memory_usage() + step_.memory_usage();
+  return outputs_.memory_usage() + step_.memory_usage() + solver_->memory_usage() +
+         history_.memory_usage();
 }
 
 /* ---------------------------------------------------------------------- per-atom data */

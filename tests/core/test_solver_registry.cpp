@@ -3,6 +3,7 @@
 #include "solver.h"
 
 #include "core_test_util.h"
+#include "random_config.h"
 
 #include <gtest/gtest.h>
 
@@ -62,4 +63,32 @@ TEST(SolverRegistry, NamesListUzawaAndEveryNameBuilds)
   std::sort(sorted.begin(), sorted.end());
   EXPECT_EQ(std::adjacent_find(sorted.begin(), sorted.end()), sorted.end());
   EXPECT_NE(make_solver("uzawa").get(), make_solver("uzawa").get());
+}
+
+// memory_usage() feeds LAMMPS's per-rank memory line: an iterative solver keeps per-row
+// scratch between solves (at least its gaps and working set: 2 doubles per row), the exact
+// solver keeps nothing.
+TEST(SolverRegistry, MemoryUsageCountsThePerRowScratch)
+{
+  hctest::RandomConfigOptions o;
+  o.n = 150;
+  o.box = 9.5;
+  const hctest::RandomConfig c = hctest::random_config(31u, o);
+  const double rows = c.p.n_contacts();
+  ASSERT_GT(rows, 50);
+  for (const std::string &name : solver_names()) {
+    SCOPED_TRACE(name);
+    std::unique_ptr<Solver> s = make_solver(name);
+    EXPECT_EQ(s->memory_usage(), 0.0);    // nothing before the first solve
+    SerialOps ops;
+    std::vector<double> mu;
+    std::vector<Vec3> u;
+    s->solve(c.p, SolverSettings{}, ops, mu, u);
+    if (name == "exact") {
+      EXPECT_EQ(s->memory_usage(), 0.0);
+    } else {
+      EXPECT_GE(s->memory_usage(), 2.0 * sizeof(double) * rows);
+      EXPECT_LE(s->memory_usage(), 64.0 * sizeof(double) * (rows + c.p.n_bodies()));
+    }
+  }
 }

@@ -20,6 +20,14 @@ class ApgdSolver : public IterativeSolver<Law> {
   double set_residual(const std::vector<double> &mu, const std::vector<Vec3> &u) override;
   void shifted(const SolverSettings &s, std::vector<double> &mu, std::vector<Vec3> &u) override;
 
+ public:
+  double memory_usage() const override
+  {
+    return IterativeSolver<Law>::memory_usage() + bytes_of(d_, sd_, kd_, b_, y_, gy_, next_, gnext_);
+  }
+
+ protected:
+
  private:
   // g(m) on the working set, leaving u = u(m)
   void gaps(const std::vector<double> &m, std::vector<double> &g, std::vector<Vec3> &u);

@@ -20,6 +20,12 @@ namespace hardcontact {
 template <class Law>
 class IterativeSolver : public Solver {
  public:
+  // the scratch every solver of this base keeps; a solver adds its own arrays
+  double memory_usage() const override
+  {
+    return bytes_of(shift_delta_, g_) + op_.memory_usage() + set_.memory_usage();
+  }
+
   SolveReport solve(const ContactProblem &p, const SolverSettings &s, DistributedOps &ops,
                     std::vector<double> &mu, std::vector<Vec3> &u) final
   {

@@ -25,6 +25,9 @@ class PgsSolver : public IterativeSolver<Law> {
   void rows_changed(const SolverSettings &) override { this->op_.count_degrees(this->set_.rows()); }
   bool step(const SolverSettings &s, std::vector<double> &mu, std::vector<Vec3> &u) override;
 
+ public:
+  double memory_usage() const override { return IterativeSolver<Law>::memory_usage() + bytes_of(dmu_); }
+
  private:
   std::vector<double> dmu_;    // boundary-row steps of one sweep, kept between solves
 };

@@ -34,6 +34,14 @@ class ProjectedCg : public IterativeSolver<NormalLaw> {
   void grown(const SolverSettings &s, std::vector<double> &mu, std::vector<Vec3> &u) override;
   double set_residual(const std::vector<double> &mu, const std::vector<Vec3> &u) override;
 
+ public:
+  double memory_usage() const override
+  {
+    return IterativeSolver<NormalLaw>::memory_usage() +
+           bytes_of(inv_d_, dir_, q_, w_, moved_, clipped_, clip_, wc_, touched_, near_, qc_,
+                    near_mark_, body_mark_, row_start_, row_list_);
+  }
+
  private:
   // A row CG moves: it pushes, or it overlaps and may start to.
   bool free(int c, const std::vector<double> &mu) const { return mu[c] > 0.0 || g_[c] < 0.0; }
