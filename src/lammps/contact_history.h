@@ -56,7 +56,8 @@ class ContactHistory {
   // bytes of the per-atom table (nmax rows of 1 + stride() x capacity doubles)
   double memory_usage() const
   {
-    return static_cast<double>(nmax_) * (sizeof(double *) + sizeof(double) * (1 + stride() * capacity_));
+    const double row = sizeof(double *) + sizeof(double) * (1.0 + stride() * capacity_);
+    return nmax_ * row;
   }
 
  private:

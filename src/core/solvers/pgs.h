@@ -26,7 +26,10 @@ class PgsSolver : public IterativeSolver<Law> {
   bool step(const SolverSettings &s, std::vector<double> &mu, std::vector<Vec3> &u) override;
 
  public:
-  double memory_usage() const override { return IterativeSolver<Law>::memory_usage() + bytes_of(dmu_); }
+  double memory_usage() const override
+  {
+    return IterativeSolver<Law>::memory_usage() + bytes_of(dmu_);
+  }
 
  private:
   std::vector<double> dmu_;    // boundary-row steps of one sweep, kept between solves
