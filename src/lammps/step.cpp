@@ -89,7 +89,7 @@ StepResult ContactStep::solve(Solver &solver, const SolverSettings &settings,
     ++result.rounds;
     // An unconverged solve is not refined further: its violations are reported, not chased.
     if (!result.report.converged) break;
-    sink.begin_missed(u_, result.report.speed_scale, settings.tol);
+    sink.begin_missed(u_, result.report.speed_scale, settings.tol, speed_);
     offer_rows(bodies, sink);
     if (ops_.sum_all(sink.added()) == 0.0) break;
     if (result.rounds == MAX_ROUNDS) {

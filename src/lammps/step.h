@@ -94,6 +94,7 @@ class ContactStep : protected LAMMPS_NS::Pointers {
   std::vector<Vec3> u_;
   std::vector<Vec3> x_owner_;
   std::vector<double> free_speed_;    // RowSink's |u_free| per body
+  std::vector<double> speed_;         // RowSink's |u| per body after a solve
   std::vector<Vec3> u_start_;         // u^n per body, for restitution
   std::vector<double> row_e_;         // restitution per row
   std::vector<double> row_f_;         // cohesion per row

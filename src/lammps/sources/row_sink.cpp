@@ -16,9 +16,14 @@ void RowSink::begin_candidates(double scale)
   added_ = 0;
 }
 
-void RowSink::begin_missed(const std::vector<Vec3> &u, double speed_scale, double tol)
+void RowSink::begin_missed(const std::vector<Vec3> &u, double speed_scale, double tol,
+                           std::vector<double> &speed)
 {
   scale_ = 1.0;    // a candidate of the step is a row already
+  const int nb = p_.n_bodies();
+  speed.resize(nb);
+  for (int b = 0; b < nb; ++b) speed[b] = u[b].norm();
+  speed_u_ = &speed;
   u_ = &u;
   speed_scale_ = speed_scale;
   tol_ = tol;

@@ -27,7 +27,9 @@ class RowSink {
   // Missed rows: after a solve to velocities u with row scales of speed V (residual.h), the
   // non-candidates violated beyond tol at u (a light sphere struck by a heavy one can move
   // faster than its free speed). Then u satisfies eq. 15 for every offered row.
-  void begin_missed(const std::vector<Vec3> &u, double speed_scale, double tol);
+  // speed: the caller's workspace for |u| per body (kept between steps).
+  void begin_missed(const std::vector<Vec3> &u, double speed_scale, double tol,
+                    std::vector<double> &speed);
 
   // A row against a pair or a plane wall (whose velocity, if it moves, is its plane's).
   void offer(int i, int j, const Vec3 &n, double d, double size)
@@ -56,9 +58,18 @@ class RowSink {
   // u_wall: the wall's velocity at the contact, null for a pair or a wall at rest
   void offer_row(int i, int j, const Vec3 &n, double d, double size, const Vec3 *u_wall)
   {
-    const double reach = speed_[i] + (!is_wall(j) ? speed_[j] : u_wall ? u_wall->norm() : 0.0);
+    const double wall_speed = is_wall(j) && u_wall ? u_wall->norm() : 0.0;
+    const double reach = speed_[i] + (!is_wall(j) ? speed_[j] : wall_speed);
     const bool candidate = d <= scale_ * p_.h * reach;
-    if (u_ == nullptr ? !candidate : candidate || !violated(i, j, n, d, size, u_wall)) return;
+    if (u_ == nullptr) {
+      if (!candidate) return;
+    } else {
+      if (candidate) return;
+      // g = d + h n.(u_j - u_i) >= d - h (|u_i| + |u_j|): a gap u cannot close is not
+      // violated, whatever its scale (most offers of the pass: one compare instead of the test)
+      const double moved = (*speed_u_)[i] + (!is_wall(j) ? (*speed_u_)[j] : wall_speed);
+      if (d > p_.h * moved || !violated(i, j, n, d, size, u_wall)) return;
+    }
     // A pair held by two processes (newton off) is counted by the side of the smaller ID.
     const bool counted = is_wall(j) || j < nlocal_ || tag_[i] < tag_[j];
     p_.add_contact(i, j, n, d, size, counted);    // D < 0: see Targets
@@ -73,6 +84,7 @@ class RowSink {
   std::vector<double> &speed_;    // |u_free| per body, from begin_candidates
   double scale_ = 1.0;
   const std::vector<Vec3> *u_ = nullptr;    // set in the missed-row pass only
+  const std::vector<double> *speed_u_ = nullptr;    // |u| per body, in that pass
   const std::vector<Vec3> *plane_velocity_ = nullptr;
   bool moving_ = false;
   double speed_scale_ = 0.0;
