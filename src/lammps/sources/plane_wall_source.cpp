@@ -29,8 +29,12 @@ void PlaneWallSource::visit(const Bodies &, RowSink &sink) const
   int *mask = atom->mask;
   for (int i = 0; i < atom->nlocal; ++i) {
     if (!(mask[i] & groupbit_)) continue;
-    for (int w = 0; w < nw; ++w)
-      sink.offer(i, wall_body(w), walls_[w].normal(), walls_[w].gap(x[i], radius[i]), radius[i]);
+    for (int w = 0; w < nw; ++w) {
+      const double d = walls_[w].gap(x[i], radius[i]);
+      // most spheres are far from most walls: turned down before the row is assembled
+      if (sink.plane_too_far(i, wall_body(w), d)) continue;
+      sink.offer(i, wall_body(w), walls_[w].normal(), d, radius[i]);
+    }
   }
 }
 

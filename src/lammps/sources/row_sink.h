@@ -51,6 +51,20 @@ class RowSink {
     plane_velocity_ = plane;
     moving_ = moving;
   }
+  // How far apart the surfaces of pair (i, j) may be and the pair still become a row in this
+  // pass (the candidate test, or in the missed-row pass the gap u could close): a source may
+  // skip a pair farther than that without computing its normal (offer_row would turn it down).
+  double pair_reach(int i, int j) const
+  {
+    return u_ == nullptr ? scale_ * p_.h * (speed_[i] + speed_[j])
+                         : p_.h * ((*speed_u_)[i] + (*speed_u_)[j]);
+  }
+  // The same for sphere i against plane wall j (wall_body): whether its gap d is too wide.
+  bool plane_too_far(int i, int j, double d) const
+  {
+    const double wall = plane_velocity_ ? (*plane_velocity_)[wall_index(j)].norm() : 0.0;
+    return d > (u_ == nullptr ? scale_ * p_.h * (speed_[i] + wall) : p_.h * ((*speed_u_)[i] + wall));
+  }
   // Rows added since the last begin_*.
   int added() const { return added_; }
 
