@@ -41,7 +41,7 @@ MACHINE="$RESULTS/perf_machine.csv"
 [ -n "${PERF_ONLY:-}" ] && MACHINE="$RESULTS/perf_machine_${PERF_ONLY//,/_}.csv"
 {
   echo "key,value"
-  echo "only,${PERF_ONLY:-all}"
+  echo "only,\"${PERF_ONLY:-all}\""
   echo "mode,$MODE"
   echo "date,$(date -u '+%Y-%m-%d %H:%M UTC')"
   echo "nproc,$(nproc)"
