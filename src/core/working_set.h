@@ -46,6 +46,18 @@ class WorkingSet {
   {
     return Law::violation(g, m, k, scale_[c]);
   }
+  // The same, also giving Law::shift(g, k) (friction: computed with it at no extra cost; the
+  // normal law has no shift).
+  double violation(int c, const double *g, const double *m, const Coefficients &k,
+                   double &shift) const
+  {
+    if constexpr (Law::block > 1) {
+      return Law::violation(g, m, k, scale_[c], shift);
+    } else {
+      shift = 0.0;
+      return Law::violation(g, m, k, scale_[c]);
+    }
+  }
   double scale(int c) const { return scale_[c]; }
   double memory_usage() const { return bytes_of(rows_, member_, scale_); }
   const std::vector<double> &scales() const { return scale_; }

@@ -63,10 +63,18 @@ struct RollingLaw {
   // As coulomb.h, with the rolling pair beside the tangential one: g = (g_n + s, g_t, g_r).
   static double violation(const double *g, const double *m, const Coefficients &k, double scale)
   {
+    double unused;
+    return violation(g, m, k, scale, unused);
+  }
+  // The same, also giving shift(g, k) from the same norms (as coulomb.h).
+  static double violation(const double *g, const double *m, const Coefficients &k, double scale,
+                          double &shift)
+  {
     const double coef[2] = {k.friction, k.rolling};
     const double gl[2] = {std::hypot(g[1], g[2]), std::hypot(g[3], g[4])};
+    shift = coef[0] * gl[0] + coef[1] * gl[1];
     if (m[0] <= 0.0) {
-      const double v = coef[0] * gl[0] + coef[1] * gl[1] - g[0];
+      const double v = shift - g[0];
       return (v > 0.0 ? v : 0.0) / scale;
     }
     double dn = g[0], worst = 0.0;

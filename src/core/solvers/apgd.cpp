@@ -111,10 +111,7 @@ double ApgdSolver<Law>::set_residual(const std::vector<double> &mu, const std::v
     return residual_;
   }
   double r = 0.0;
-  for (const int c : this->set_.rows()) {
-    const size_t a = static_cast<size_t>(B) * c;
-    r = std::max(r, this->set_.violation(c, &this->g_[a], &mu[a], this->coef(c)));
-  }
+  for (const int c : this->set_.rows()) r = std::max(r, this->set_violation(c, mu));
   return r;
 }
 
@@ -227,8 +224,7 @@ bool ApgdSolver<Law>::step(const SolverSettings &, std::vector<double> &mu, std:
       mu[a] = next_[a];
       g[a] = gnext_[a];
     }
-    const size_t a = static_cast<size_t>(B) * c;
-    r = std::max(r, this->set_.violation(c, &g[a], &mu[a], this->coef(c)));
+    r = std::max(r, this->set_violation(c, mu));
   }
   residual_ = r;
   residual_ready_ = true;
