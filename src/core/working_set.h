@@ -46,13 +46,14 @@ class WorkingSet {
   {
     return Law::violation(g, m, k, scale_[c]);
   }
-  // The same, also giving Law::shift(g, k) (friction: computed with it at no extra cost; the
-  // normal law has no shift).
+  // The same for a largest violation over rows (friction: it may return floor when at most
+  // floor, laws/coulomb.h), also giving Law::shift(g, k), computed with it at no extra cost
+  // (the normal law has no shift).
   double violation(int c, const double *g, const double *m, const Coefficients &k,
-                   double &shift) const
+                   double &shift, double floor) const
   {
     if constexpr (Law::block > 1) {
-      return Law::violation(g, m, k, scale_[c], shift);
+      return Law::violation(g, m, k, scale_[c], shift, floor);
     } else {
       shift = 0.0;
       return Law::violation(g, m, k, scale_[c]);

@@ -13,6 +13,7 @@
 
 #include "law.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace hardcontact {
@@ -48,12 +49,16 @@ struct CoulombLaw {
   static double violation(const double *g, const double *m, const Coefficients &k, double scale)
   {
     double unused;
-    return violation(g, m, k, scale, unused);
+    return violation(g, m, k, scale, unused, -1.0);
   }
-  // The same, also giving shift(g, k) from the same |g_t|: a solver needs both every iteration
-  // (IterativeSolver::law_shift_), and the norm is half of what a row's check costs.
+  // The same for a largest violation over rows: a row at most floor may return floor instead
+  // (most rows of a solve are far below the largest, and a bound without the norms of q and
+  // d_t shows it: with |q| <= |q1| + |q2|, d_n <= |g_n| + coef |g_t| |q| and
+  // |d_t| <= |g_t| (1 + |q|); the margin covers the round-off of either side, so the largest is
+  // the same to the bit). Also gives shift(g, k) from the same |g_t|: the solver needs both
+  // every iteration (IterativeSolver::law_shift_).
   static double violation(const double *g, const double *m, const Coefficients &k, double scale,
-                          double &shift)
+                          double &shift, double floor)
   {
     const double coef = k.friction;
     const double gt = std::hypot(g[1], g[2]);
@@ -65,6 +70,9 @@ struct CoulombLaw {
     const double cap = coef * m[0];
     if (cap <= 0.0) return std::abs(g[0]) / scale;    // frictionless row: the normal law
     const double q1 = m[1] / cap, q2 = m[2] / cap;
+    const double q = std::abs(q1) + std::abs(q2);
+    const double bound = std::max(std::abs(g[0]) + coef * gt * q, gt + gt * q) / scale;
+    if (bound * (1.0 + 1e-12) <= floor) return floor;
     const double dn = std::abs(g[0] - coef * gt * std::hypot(q1, q2));
     const double dt = std::hypot(g[1] + gt * q1, g[2] + gt * q2);
     return (dn > dt ? dn : dt) / scale;

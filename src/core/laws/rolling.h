@@ -11,6 +11,7 @@
 
 #include "law.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace hardcontact {
@@ -64,11 +65,12 @@ struct RollingLaw {
   static double violation(const double *g, const double *m, const Coefficients &k, double scale)
   {
     double unused;
-    return violation(g, m, k, scale, unused);
+    return violation(g, m, k, scale, unused, -1.0);
   }
-  // The same, also giving shift(g, k) from the same norms (as coulomb.h).
+  // The same for a largest violation over rows, giving floor for a row shown to be at most
+  // floor by the bound of coulomb.h pair by pair; also shift(g, k) from the same norms.
   static double violation(const double *g, const double *m, const Coefficients &k, double scale,
-                          double &shift)
+                          double &shift, double floor)
   {
     const double coef[2] = {k.friction, k.rolling};
     const double gl[2] = {std::hypot(g[1], g[2]), std::hypot(g[3], g[4])};
@@ -77,11 +79,23 @@ struct RollingLaw {
       const double v = shift - g[0];
       return (v > 0.0 ? v : 0.0) / scale;
     }
+    double qs[4] = {0.0, 0.0, 0.0, 0.0};    // m_t / cap, m_r / cap (0: no bound on the pair)
+    double bn = std::abs(g[0]), bt = 0.0;
+    for (int q = 0; q < 2; ++q) {
+      const double cap = coef[q] * m[0];
+      if (cap <= 0.0) continue;    // no bound on this pair: no condition
+      qs[2 * q] = m[1 + 2 * q] / cap;
+      qs[2 * q + 1] = m[2 + 2 * q] / cap;
+      const double a = std::abs(qs[2 * q]) + std::abs(qs[2 * q + 1]);
+      bn += coef[q] * gl[q] * a;
+      bt = std::max(bt, gl[q] + gl[q] * a);
+    }
+    if (std::max(bn, bt) / scale * (1.0 + 1e-12) <= floor) return floor;
     double dn = g[0], worst = 0.0;
     for (int q = 0; q < 2; ++q) {
       const double cap = coef[q] * m[0];
       if (cap <= 0.0) continue;    // no bound on this pair: no condition
-      const double q1 = m[1 + 2 * q] / cap, q2 = m[2 + 2 * q] / cap;
+      const double q1 = qs[2 * q], q2 = qs[2 * q + 1];
       dn -= coef[q] * gl[q] * std::hypot(q1, q2);
       const double d = std::hypot(g[1 + 2 * q] + gl[q] * q1, g[2 + 2 * q] + gl[q] * q2);
       worst = worst > d ? worst : d;

@@ -111,7 +111,7 @@ double ApgdSolver<Law>::set_residual(const std::vector<double> &mu, const std::v
     return residual_;
   }
   double r = 0.0;
-  for (const int c : this->set_.rows()) r = std::max(r, this->set_violation(c, mu));
+  for (const int c : this->set_.rows()) r = std::max(r, this->set_violation(c, mu, r));
   return r;
 }
 
@@ -224,7 +224,7 @@ bool ApgdSolver<Law>::step(const SolverSettings &, std::vector<double> &mu, std:
       mu[a] = next_[a];
       g[a] = gnext_[a];
     }
-    r = std::max(r, this->set_violation(c, mu));
+    r = std::max(r, this->set_violation(c, mu, r));
   }
   residual_ = r;
   residual_ready_ = true;

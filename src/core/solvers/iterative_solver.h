@@ -151,18 +151,19 @@ class IterativeSolver : public Solver {
     for (const int c : set_.rows()) {
       const size_t at = static_cast<size_t>(B) * c;
       op_.template gap_block<B>(c, u, &g_[at]);
-      const double v = set_violation(c, mu);
+      const double v = set_violation(c, mu, r);
       r = r > v ? r : v;
     }
     return r;
   }
-  // Row c's violation at (mu, g_); with friction it keeps law_shift_[c] = Law::shift(g_ of c),
-  // computed with it.
-  double set_violation(int c, const std::vector<double> &mu)
+  // Row c's violation at (mu, g_) for a largest one over rows: a row at most floor (the
+  // largest so far) may give floor instead (laws/coulomb.h). With friction it keeps
+  // law_shift_[c] = Law::shift(g_ of c), computed with it.
+  double set_violation(int c, const std::vector<double> &mu, double floor)
   {
     const size_t at = static_cast<size_t>(B) * c;
     if constexpr (B == 1) return set_.violation(c, &g_[at], &mu[at], coef(c));
-    else return set_.violation(c, &g_[at], &mu[at], coef(c), law_shift_[c]);
+    else return set_.violation(c, &g_[at], &mu[at], coef(c), law_shift_[c], floor);
   }
 
   DualOperator op_;
