@@ -17,6 +17,7 @@ Usage: analyze.py --out CSV --log LAMMPS_LOG --label NAME --base FILE FILE...
 
 import argparse
 import csv
+import os
 import re
 import time
 
@@ -245,7 +246,7 @@ def main():
                    smallest=" ".join("%.4g" % v for v in small))
         print(" ".join("%s=%s" % (k, v) for k, v in row.items() if k != "smallest"), flush=True)
         rows.append(row)
-    new = not __import__("os").path.exists(a.out)
+    new = not os.path.exists(a.out)
     with open(a.out, "a", newline="") as out:
         w = csv.DictWriter(out, fieldnames=list(rows[0].keys()))
         if new:
