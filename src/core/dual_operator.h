@@ -42,9 +42,18 @@ class DualOperator {
   void velocities_with(const std::vector<int> &rows, MuOf &&mu_of, std::vector<Vec3> &u) const
   {
     start_velocities(u);
-    for (const int c : rows) {
-      const double *m = mu_of(c);
-      if (nonzero<B>(m)) apply_block<B>(c, m, u);
+    if constexpr (B == 1) {
+      const RowKernel k(*p_);
+      double *v = u.data()->data();
+      for (const int c : rows) {
+        const double *m = mu_of(c);
+        if (m[0] != 0.0) k.apply(c, m[0], v);
+      }
+    } else {
+      for (const int c : rows) {
+        const double *m = mu_of(c);
+        if (nonzero<B>(m)) apply_block<B>(c, m, u);
+      }
     }
     forward(u);
   }
@@ -80,9 +89,11 @@ class DualOperator {
       if (p.rotates())
         for (const int b : *moved) w[nb + b] = Vec3::Zero();
     }
+    const RowKernel k(p);
+    double *v = w.data()->data();
     for (const int c : rows) {
       const double m = m_of(c);
-      if (m != 0.0) apply(c, m, w);
+      if (m != 0.0) k.apply(c, m, v);
     }
     forward(w);
   }
@@ -125,11 +136,7 @@ class DualOperator {
   // Adds the velocity change of an impulse h dmu G_c to the owned bodies of row c.
   void apply(int c, double dmu, std::vector<Vec3> &u) const
   {
-    const ContactProblem &p = *p_;
-    const Vec3 impulse = (p.h * dmu) * p.normal[c];
-    const int i = p.body_i[c], j = p.body_j[c];
-    if (i < p.n_owned) u[i] -= p.inv_mass[i] * impulse;
-    if (j >= 0 && j < p.n_owned) u[j] += p.inv_mass[j] * impulse;
+    RowKernel(*p_).apply(c, dmu, u.data()->data());
   }
   // The same for a block: with friction the impulse h (m_n n + m_1 t_1 + m_2 t_2) acts on j
   // at -a_j n and its opposite on i at +a_i n (the arms), so both spin by -a I^-1 n x impulse.

@@ -82,12 +82,15 @@ void ProjectedCg::index_rows()
 template <class Update>
 void ProjectedCg::refresh_with(const std::vector<double> &mu, Update &&update)
 {
-  const ContactProblem &p = op_.problem();
+  // local addresses, as in product(); the violation is set_.violation's (normal law)
+  const char *counted = op_.problem().counted.data();
+  const double *g = g_.data(), *inv_d = inv_d_.data(), *q = q_.data(), *m = mu.data();
+  const double *scale = set_.scales().data();
   double r = 0.0, num = 0.0;
   for (const int c : set_.rows()) {
     update(c);
-    r = std::max(r, set_.violation(c, &g_[c], &mu[c], Coefficients{}));
-    if (p.counted[c] && free(c, mu)) num += g_[c] * inv_d_[c] * q_[c];
+    r = std::max(r, NormalLaw::violation(g[c], m[c], scale[c]));
+    if (counted[c] && (m[c] > 0.0 || g[c] < 0.0)) num += g[c] * inv_d[c] * q[c];    // free()
   }
   residual_ = r;
   gamma_num_ = op_.ops().sum_all(num);
@@ -102,26 +105,35 @@ double ProjectedCg::product(const std::vector<double> &mu, double gamma)
 {
   const ContactProblem &p = op_.problem();
   const std::vector<int> &rows = set_.rows();
+  // the per-row arrays through local addresses (RowKernel: the stores below would otherwise
+  // reload them), and the sums in registers rather than in the array sum_all takes
+  double *dir = dir_.data(), *q = q_.data();
+  const double *g = g_.data(), *inv_d = inv_d_.data(), *m = mu.data();
   op_.impulse_velocities_with(
       rows,
       [&](int c) {
-        dir_[c] = free(c, mu) ? g_[c] * inv_d_[c] - gamma * dir_[c] : 0.0;
-        return dir_[c];
+        dir[c] = m[c] > 0.0 || g[c] < 0.0 ? g[c] * inv_d[c] - gamma * dir[c] : 0.0;    // free()
+        return dir[c];
       },
       w_, &moved_);
-  double s[2] = {0.0, 0.0};
+  const RowKernel k(p);
+  const double *w = w_.data()->data();
+  const char *counted = p.counted.data();
+  double gd = 0.0, dq = 0.0;
   double ratio = 0.0;
   for (const int c : rows) {
-    const double m = dir_[c];
-    q_[c] = p.h * p.normal_speed(c, w_);
+    const double d = dir[c];
+    const double qc = k.h * k.normal_speed(c, w);
+    q[c] = qc;
     // a row at 0 the direction would lower (an overlapping row joined with the old
     // direction's share): no step keeps it feasible
-    if (m > 0.0)
-      ratio = mu[c] > 0.0 ? std::max(ratio, m / mu[c]) : std::numeric_limits<double>::infinity();
-    if (!p.counted[c]) continue;
-    s[0] += g_[c] * m;
-    s[1] += m * q_[c];
+    if (d > 0.0)
+      ratio = m[c] > 0.0 ? std::max(ratio, d / m[c]) : std::numeric_limits<double>::infinity();
+    if (!counted[c]) continue;
+    gd += g[c] * d;
+    dq += d * qc;
   }
+  double s[2] = {gd, dq};
   op_.ops().sum_all(s, 2);
   sums_[0] = s[0];
   sums_[1] = s[1];
@@ -137,7 +149,12 @@ void ProjectedCg::move(double a, std::vector<double> &mu, std::vector<Vec3> &u)
 // move() and refresh() in one pass over the rows (the CG step's common case)
 void ProjectedCg::move_and_refresh(double a, std::vector<double> &mu, std::vector<Vec3> &u)
 {
-  refresh_with(mu, [&](int c) { move_row(c, a, mu); });
+  double *m = mu.data(), *g = g_.data();
+  const double *dir = dir_.data(), *q = q_.data();
+  refresh_with(mu, [&](int c) {    // move_row(c, a, mu)
+    m[c] -= a * dir[c];
+    g[c] -= a * q[c];
+  });
   move_bodies(a, u);
 }
 
