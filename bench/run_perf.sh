@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Performance of fix hardcontact (issue 15): iterations per step against pile height for every
 # solver, a resting scene with mass ratios 1..1000, contact-iterations per second against N,
-# time to solution hard vs soft (gran/hertz/history twin), 1 vs 2 MPI ranks. Regenerates
+# time to solution hard vs soft (gran/hertz/history twin), 1 vs 2 MPI ranks, the piles brought
+# to rest for real (still) and the settle with larger steps (steps). Regenerates
 # doc/performance.md, doc/figures/perf_*.png and bench/results/perf_*.csv.
 #
 #   bench/run_perf.sh [--quick]
@@ -13,7 +14,8 @@
 # it while measuring), HARDCONTACT_SOURCE_DESC (what that launcher was built from; default:
 # this tree's commit), SOFT_LMP (default /usr/bin/lmp), BENCH_WORKDIR (scratch, default
 # bench/work: data files, logs, restarts; not committed), PERF_ONLY (subset of
-# heights,tray,throughput,tts,big: only those parts run, the others' rows of the last runs are
+# heights,still,tray,throughput,tts,steps,big: only those parts run (still needs the
+# restarts of a heights run), the others' rows of the last runs are
 # kept; big, the 64,000-sphere pile, runs only when named: about 15 minutes).
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh" "perf-" "$@"
@@ -29,7 +31,7 @@ fi
 T0=$SECONDS
 LOAD_BEFORE="$(cut -d' ' -f1-3 /proc/loadavg)"
 "$PY" "$ROOT/bench/perf/run.py" "${QUICK[@]}" --lmp "$LMP" --soft-lmp "$SOFT_LMP" \
-  --work "$WORK" --results "$RESULTS" --only "${PERF_ONLY:-heights,tray,throughput,tts}" \
+  --work "$WORK" --results "$RESULTS" --only "${PERF_ONLY:-heights,still,tray,throughput,tts,steps}" \
   2>&1 | tee "$WORK/run_log.txt"
 LOAD_AFTER="$(cut -d' ' -f1-3 /proc/loadavg)"
 cp "$WORK/run_log.txt" "$RESULTS/perf_run_log.txt"

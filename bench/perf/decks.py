@@ -17,7 +17,9 @@ neigh_modify    delay 0 every 1 check yes
 fix             grav all gravity 1.0 vector 0 0 -1
 fix             hc all hardcontact solver {solver} tol {tol!r} {walls}
 timestep        {h!r}
-thermo_style    custom step time cpu ke f_hc[1] f_hc[3] f_hc[4] f_hc[5] f_hc[6] f_hc[7] f_hc[9]
+compute         zz all property/atom z
+compute         zavg all reduce ave c_zz
+thermo_style    custom step time cpu ke f_hc[1] f_hc[3] f_hc[4] f_hc[5] f_hc[6] f_hc[7] f_hc[9] c_zavg
 thermo_modify   norm no
 """
 
@@ -31,6 +33,14 @@ fix             halt all halt 1 v_elapsed > {cap!r} error soft message no
 UNHALT = """unfix           halt
 timer           timeout off
 """
+# A phase that ends once the pile is at rest: the kinetic energy per sphere below a threshold
+# (in units of m g d, mgd the scene's mean m g d), checked every 10 steps.
+CALM = """variable        calm equal ke/atoms/{mgd!r}
+fix             calm all halt 10 v_calm < {until!r} error soft message no
+"""
+UNCALM = """unfix           calm
+timer           timeout off
+"""
 
 
 def start_line(start):
@@ -39,17 +49,24 @@ def start_line(start):
 
 
 def hard(scene, start, solver, tol, phases, h=0.02, skin=0.3, ranks_2d=False, restart_out=None):
-    """A hardcontact run: phases = [(steps, thermo_every, cap_seconds), ...], each a `run`
-    stopped by fix halt after cap_seconds of wall time; thermo columns step time cpu ke
-    f_hc[1,3,4,5,6,7,9]. ranks_2d: `processors * * 1` (domains split in x and y only).
+    """A hardcontact run: phases = [(steps, thermo_every, cap_seconds[, until]), ...], each a
+    `run` stopped by fix halt after cap_seconds of wall time, or (until) once the kinetic energy
+    per sphere is below until x m g d; thermo columns step time cpu ke f_hc[1,3,4,5,6,7,9] and
+    the mean height c_zavg. ranks_2d: `processors * * 1` (domains split in x and y only).
     restart_out: written after the first phase."""
     text = HEAD.format(processors="processors      * * 1\n" if ranks_2d else "",
                        start=start_line(start))
     text += HARD.format(skin=skin, solver=solver, tol=tol, walls=scene["walls"], h=h)
-    for k, (steps, every, cap) in enumerate(phases):
+    for k, phase in enumerate(phases):
+        steps, every, cap = phase[:3]
+        until = phase[3] if len(phase) > 3 else None
         text += HALT.format(cap=float(cap))
+        if until is not None:
+            text += CALM.format(mgd=scene["mean_mass"] * scene["mean_d"], until=float(until))
         text += "thermo          %d\nrun             %d\n" % (every, steps)
         text += UNHALT
+        if until is not None:
+            text += UNCALM
         if k == 0 and restart_out:
             text += "write_restart   %s\n" % restart_out
     return text

@@ -51,7 +51,8 @@ def config(quick):
             window=15, settle_cap=15.0, window_cap=8.0, long_cap=60.0,
             tray_ratios=[1, 1000], tray_settle=150, tray_window=20,
             tray_solvers=["apgd", "pgs"], throughput=[(10, 5), (16, 5)], thr_steps=150, thr_cap=20.0,
-            ts_pile=(8, 8, 10), soft_overlaps=[1e-3, 1e-4], soft_cap=40.0, mpi_tols=[1e-2])
+            ts_pile=(8, 8, 10), soft_overlaps=[1e-3, 1e-4], soft_cap=40.0, mpi_tols=[1e-2],
+            still_layers=[5], still_steps=2000, still_cap=30.0, steps_h=[0.05, 0.1])
     return dict(
         footprint=10, layers=[5, 10, 20, 40], exact_layers=5, settle=lambda L: 200 + 20 * L,
         window=40, settle_cap=20.0, window_cap=12.0, long_cap=200.0,
@@ -59,12 +60,17 @@ def config(quick):
         tray_solvers=["apgd", "pgs", "uzawa"], throughput=[(10, 10), (20, 10), (32, 10), (45, 10)],
         thr_steps=250, thr_cap=45.0,
         ts_pile=(20, 20, 20), soft_overlaps=[1e-3, 1e-4, 1e-5, 1e-6], soft_cap=120.0,
-        mpi_tols=[1e-4, 1e-2])
+        mpi_tols=[1e-4, 1e-2],
+        still_layers=[5, 10, 20], still_steps=6000, still_cap=300.0, steps_h=[0.05, 0.1])
 
 
 # The parts of a run (--only) and the groups of rows each writes
-DEFAULT_PARTS = "heights,tray,throughput,tts"
-PART_OF_GROUP = dict(heights="heights", tray="tray", throughput="throughput", tts="tts", mpi="tts")
+DEFAULT_PARTS = "heights,still,tray,throughput,tts,steps"
+PART_OF_GROUP = dict(heights="heights", tray="tray", throughput="throughput", tts="tts", mpi="tts",
+                     still="still", steps="steps")
+# "At rest" for the part still: kinetic energy per sphere below this x m g d (the windows of
+# the part heights start where the settle ends, at 1e-3 m g d: the piles still creep there)
+STILL_KE = 1e-10
 
 
 def loadavg():
@@ -141,16 +147,18 @@ class Bench:
         return text, time.time() - t, before, loadavg()
 
     def hard(self, rid, group, scene, data, solver, tol, phases, names, extra=None,
-             start=None, restart_out=None, ranks=1):
-        """One hardcontact run with the given phases [(steps, cap)], thermo every step; one row
-        per phase in perf_runs.csv."""
+             start=None, restart_out=None, ranks=1, h=0.02, skin=0.3):
+        """One hardcontact run with the given phases [(steps, cap[, until])] (until: the phase
+        ends once the kinetic energy per sphere is below until x m g d), thermo every step; one
+        row per phase in perf_runs.csv."""
         rundir = self.work / rid
         start = start or ("data", str(data))
-        deck = decks.hard(scene, start, solver, tol, [(n, 1, cap) for n, cap in phases],
+        deck = decks.hard(scene, start, solver, tol, [(p[0], 1) + tuple(p[1:]) for p in phases],
+                          h=h, skin=skin,
                           ranks_2d=ranks > 1 or (extra or {}).get("mpi_ref", False),
                           restart_out=restart_out and str(rundir / restart_out))
         self.note("%s: %s tol %g, %d spheres, %s ranks %d" % (rid, solver, tol, scene["n"],
-                                                             "+".join(str(n) for n, _ in phases), ranks))
+                                                             "+".join(str(p[0]) for p in phases), ranks))
         try:
             text, wall, lb, la = self.launch(self.a.lmp, deck, rundir, ranks)
         except lmp.LammpsError as e:
@@ -161,7 +169,9 @@ class Bench:
         blocks, times = lmp.thermo_blocks(text), lmp.timings(text)
         mgd = scene["mean_mass"] * scene["mean_d"]
         rows = []
-        for k, ((nreq, cap), name) in enumerate(zip(phases, names)):
+        for k, (phase, name) in enumerate(zip(phases, names)):
+            nreq, cap = phase[:2]
+            until = phase[2] if len(phase) > 2 else None
             if k >= len(blocks):
                 break
             b, t = blocks[k], times[k]
@@ -171,7 +181,10 @@ class Bench:
             ke = b["KinEng"] / scene["n"] / mgd
             row = dict(id=rid, group=group, phase=name, solver=solver, tol=tol, n=scene["n"],
                        layers=scene.get("layers", ""), ratio=scene.get("mass_ratio", ""),
-                       ranks=ranks, status="ok" if done >= nreq else "capped",
+                       ranks=ranks, h=h, skin=skin,
+                       # a phase with `until` is done when the pile came to rest, not at nreq steps
+                       status=("ok" if ke[-1] < until else "capped") if until is not None
+                       else ("ok" if done >= nreq else "capped"),
                        steps=done, steps_asked=nreq, cap_s=cap,
                        it_mean=float(it.mean()) if done else float("nan"),
                        it_median=float(np.median(it)) if done else float("nan"),
@@ -181,7 +194,9 @@ class Bench:
                        solves_mean=float(b["f_hc[9]"][sl].mean()) if done else float("nan"),
                        maxiter_stops=int(b["f_hc[6]"][-1]),
                        overlap_max=float(b["f_hc[7]"].max()),
-                       ke_end=float(ke[-1]),
+                       ke_end=float(ke[-1]), ke_start=float(ke[0]),
+                       ke_max=float(ke[1:].max()) if done else float("nan"),
+                       z_end=float(b["c_zavg"][-1]) if "c_zavg" in b else float("nan"),
                        settle_wall_s=settle_time(ke, b["CPU"]),
                        loop_s=t["loop"], modify_s=t.get("Modify", float("nan")),
                        neigh_s=t.get("Neigh", float("nan")), comm_s=t.get("Comm", float("nan")),
@@ -281,6 +296,24 @@ class Bench:
                               1e-4, [(win, c["long_cap"] if solver == "apgd" else c["window_cap"])], ["rest"],
                               start=("restart", str(restart)))
 
+    def still(self):
+        """The piles of the part heights (its settled restarts) run on with the default solver
+        until they are at rest (kinetic energy per sphere below STILL_KE m g d; a frictionless
+        pile creeps for thousands of steps after the settle), then a window there."""
+        c = self.cfg
+        fp = c["footprint"]
+        for L in c["still_layers"]:
+            sc = scenes.pile(fp, fp, L)
+            name = "pile%dx%dx%d" % (fp, fp, L)
+            data = self.datafile(sc, name)
+            restart = self.work / ("heights_%s_%s" % (name, REF)) / "settled.restart"
+            if not restart.exists():
+                self.note("still_%s: no restart from the part heights (%s); skipped" % (name, restart))
+                continue
+            self.hard("still_%s_%s" % (name, REF), "still", sc, data, REF, 1e-4,
+                      [(c["still_steps"], c["still_cap"], STILL_KE), (c["window"], c["long_cap"])],
+                      ["calm", "still"], start=("restart", str(restart)))
+
     def tray(self):
         c = self.cfg
         for ratio in c["tray_ratios"]:
@@ -341,6 +374,23 @@ class Bench:
             self.hard("mpi2_%s_%s_tol%g" % (name, REF, tol), "mpi", sc, data, REF, tol,
                       [(steps, 400.0)], ["settle"], ranks=2)
 
+    def larger_step(self):
+        """Time to solution with a larger step: the pile of the part tts settled for the same
+        simulated time with h = 0.02 (the issue's scene) and the larger steps steps_h (skin
+        9 h, at least 0.3: a step may move a sphere further), and its soft twin at a static
+        overlap of 1e-3, all in this part so that the ratios come from one run."""
+        c = self.cfg
+        nx, ny, L = c["ts_pile"]
+        sc = scenes.pile(nx, ny, L)
+        name = "pile%dx%dx%d" % (nx, ny, L)
+        data = self.datafile(sc, name)
+        duration = c["settle"](L) * 0.02
+        for h in [0.02] + c["steps_h"]:
+            n = int(round(duration / h))
+            self.hard("steps_%s_%s_h%g" % (name, REF, h), "steps", sc, data, REF, 1e-4,
+                      [(n, 400.0)], ["settle"], h=h, skin=max(0.3, round(9.0 * h, 3)))
+        self.soft("steps_%s_soft_0.001" % name, "steps", sc, data, 1e-3, duration)
+
     def big(self):
         """Issue 15's 64,000 spheres (targets 3 and 4): an 80 x 80 x 10 pile (the 10-layer pile
         of section 1 on a footprint 64 x larger), its settle hard at tol 1e-4 on 1 and 2 ranks
@@ -379,14 +429,16 @@ def main():
     ap.add_argument("--work", required=True)
     ap.add_argument("--results", required=True)
     ap.add_argument("--only", default=DEFAULT_PARTS,
-                    help="comma-separated subset of heights,tray,throughput,tts,big (big: the "
-                         "64,000-sphere pile, hard 1 and 2 ranks and its soft twin; not in the "
-                         "default set: about 15 minutes more)")
+                    help="comma-separated subset of heights,still,tray,throughput,tts,steps,big "
+                         "(still needs the restarts of a heights run; big: the 64,000-sphere "
+                         "pile, hard 1 and 2 ranks and its soft twin; not in the default set: "
+                         "about 15 minutes more)")
     a = ap.parse_args()
     b = Bench(a)
     only = a.only.split(",")
-    for part, fn in (("heights", b.heights), ("tray", b.tray), ("throughput", b.throughput),
-                     ("tts", b.hard_vs_soft_and_mpi), ("big", b.big)):
+    for part, fn in (("heights", b.heights), ("still", b.still), ("tray", b.tray),
+                     ("throughput", b.throughput), ("tts", b.hard_vs_soft_and_mpi),
+                     ("steps", b.larger_step), ("big", b.big)):
         if part in only:
             b.part = part
             fn()
