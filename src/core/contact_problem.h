@@ -38,6 +38,10 @@ struct ContactProblem {
   // Absolute round-off of a predicted gap (distance units), from the host's coordinates and
   // speeds; 0 if unknown. No solver is asked for a gap error below it (residual.h).
   double gap_roundoff = 0.0;
+  // The bodies may be numbered differently from the last solve's problem (the host's new
+  // neighbour list moved them): what a solver keeps per row from one solve to the next
+  // (ProjectedCg's subspace) is then stale. True unless the host knows better.
+  bool renumbered = true;
 
   std::vector<int> body_i, body_j;
   std::vector<Vec3> normal;

@@ -16,6 +16,9 @@ struct SolverSettings {
   double tol = 1.0e-4;    // stop when residual() <= tol (relative to each row's scale, residual.h)
   int maxiter = 10000;    // cap on multiplier updates per solve
   double rho = 0.0;       // Uzawa step; 0 = 1 / the Gershgorin bound each solve (dual_operator.h)
+  // cg: how many past corrections (answer - warm start) span the subspace its start is
+  // improved in (projected_cg.h); 0 = the warm start as it is.
+  int subspace = 0;
   // Developers: when set, an iterative solver of the frictionless law writes the problem it
   // receives to this file before it starts (problem_dump.h); empty = nothing written.
   std::string dump_problem;

@@ -48,6 +48,11 @@ hardcontact::FixOptions checked_options(LAMMPS *lmp, int narg, char **arg)
                                      "uzawa with friction",
                                      o.solver_name);
   }
+  if (o.settings.subspace > 0 && o.solver_name != "cg")
+    hardcontact::compat::error_all(lmp->error, FLERR,
+                                   "Fix hardcontact subspace applies to solver cg (the default "
+                                   "without friction), not {}: remove subspace or use solver cg",
+                                   o.solver_name);
   return o;
 }
 

@@ -19,6 +19,9 @@ using namespace LAMMPS_NS;
 namespace hardcontact {
 namespace {
 
+// subspace N: each kept correction is a double per row and a product per solve
+constexpr int kMaxSubspace = 100;
+
 // A parser reads the values of its keyword (values[0..n-1]) into the options; n is nvalues,
 // or nvalues + optional when the words after them are values rather than the next keyword.
 using Parser = void (*)(LAMMPS *lmp, char **values, int n, FixOptions &options);
@@ -82,6 +85,22 @@ void parse_maxiter(LAMMPS *lmp, char **values, int, FixOptions &o)
                       "Fix hardcontact maxiter must be at least 1 and at most {}, got {}",
                       MAXSMALLINT, values[0]);
   o.settings.maxiter = static_cast<int>(maxiter);
+}
+
+void parse_subspace(LAMMPS *lmp, char **values, int, FixOptions &o)
+{
+  if (!utils::is_integer(values[0]))
+    compat::error_all(lmp->error, FLERR,
+                      "Fix hardcontact subspace: expected an integer (past corrections kept, 0 "
+                      "for none), got '{}'",
+                      values[0]);
+  const bigint n = utils::bnumeric(FLERR, values[0], false, lmp);
+  if (n < 0 || n > kMaxSubspace)
+    compat::error_all(lmp->error, FLERR,
+                      "Fix hardcontact subspace must be from 0 to {} (past corrections kept), "
+                      "got {}",
+                      kMaxSubspace, values[0]);
+  o.settings.subspace = static_cast<int>(n);
 }
 
 void parse_rho(LAMMPS *lmp, char **values, int, FixOptions &o)
@@ -260,6 +279,8 @@ const Keyword keywords[] = {
     {"tol", 1, 0, parse_tol, "tol value: row tolerance relative to the row scale, in (0, 1)"},
     {"maxiter", 1, 0, parse_maxiter, "maxiter N: at most N solver iterations per solve"},
     {"rho", 1, 0, parse_rho, "rho value: fixed solver step (omit: automatic)"},
+    {"subspace", 1, 0, parse_subspace,
+     "subspace N: cg starts from the best point in the span of its last N corrections (0: off)"},
     {"warmstart", 1, 0, parse_warmstart, "warmstart yes/no: start from the last step's forces"},
     {"wall", 2, 1, parse_wall,
      "wall xplane|yplane|zplane lo hi: flat walls, NULL for none, v_name for a moving one; "

@@ -17,6 +17,7 @@
 #include "domain.h"
 #include "error.h"
 #include "force.h"
+#include "neighbor.h"
 #include "update.h"
 
 #include <cfloat>
@@ -212,6 +213,8 @@ Bodies ContactStep::build_bodies(bool needs_owner_map, const StepEffects &effect
 
   problem_.h = update->dt;
   problem_.n_owned = nlocal;
+  // a new neighbour list may have sorted or exchanged the atoms: local indices changed
+  problem_.renumbered = neighbor->ago == 0;
   problem_.inv_mass.resize(nall);
   problem_.u_free.resize(nall);
   for (int i = 0; i < nall; ++i)

@@ -72,3 +72,10 @@ endforeach()
 # the neighbor rebuild look-ahead under acceleration: a falling sphere with a skin 9 x its step
 hardcontact_deck_test(NAME phys_skin_lookahead SCRIPT integration/test_phys_skin_lookahead.py
                       NP 1 LABELS physics TIMEOUT 300 HOSTS launcher modern liggghts)
+
+# cg's subspace start (subspace N): a heavy sphere at rest on a tray, with and without: same
+# height, no overlap beyond tol, at most half the iterations; ranks take the same coefficients
+foreach(_np 1 2 4)
+  hardcontact_deck_test(NAME phys_subspace_np${_np} SCRIPT integration/test_phys_subspace.py
+                        NP ${_np} LABELS physics TIMEOUT 300 HOSTS launcher modern)
+endforeach()

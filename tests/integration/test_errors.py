@@ -170,6 +170,14 @@ CASES = [
     case("maxiter_zero", deck("maxiter 0"), ["maxiter must be at least 1", "got 0"]),
     case("maxiter_fraction", deck("maxiter 1.5"), ["maxiter", "expected an integer", "'1.5'"]),
     case("maxiter_negative", deck("maxiter -5"), ["maxiter must be at least 1", "got -5"]),
+    # subspace
+    case("subspace_negative", deck("subspace -1"), ["subspace must be from 0 to 100", "got -1"]),
+    case("subspace_too_many", deck("subspace 101"), ["subspace must be from 0 to 100", "got 101"]),
+    case("subspace_fraction", deck("subspace 2.5"), ["subspace", "expected an integer", "'2.5'"]),
+    case("subspace_apgd", deck("solver apgd subspace 10"),
+         ["subspace applies to solver cg", "not apgd", "remove subspace or use solver cg"], np4=True),
+    case("subspace_friction", deck("friction 0.5 subspace 10"),
+         ["subspace applies to solver cg", "not apgd"]),
     # rho
     case("rho_zero", deck("rho 0"), ["rho must be positive", "got 0"]),
     case("rho_negative", deck("rho -1"), ["rho must be positive", "got -1"]),

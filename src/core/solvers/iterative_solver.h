@@ -91,6 +91,7 @@ class IterativeSolver : public Solver {
       if (verdict == Verdict::Grown) continue;
       if (!step(s, mu, u)) break;    // the method broke down: report the iterate
     }
+    finished(s, mu, u);
     report.rho = rho_;
     if (!report.converged) {
       if constexpr (B == 1) {
@@ -136,6 +137,11 @@ class IterativeSolver : public Solver {
   }
   // The working set is new or larger: what depends on its rows (step bounds) is out of date.
   virtual void rows_changed(const SolverSettings &) {}
+  // After the last iteration of a solve (converged or not), with its answer.
+  virtual void finished(const SolverSettings &, const std::vector<double> &,
+                        const std::vector<Vec3> &)
+  {
+  }
   // The shifts changed (friction): g_ holds the new gradient at (mu, u); the linear term of
   // the dual moved by the same amount.
   virtual void shifted(const SolverSettings &s, std::vector<double> &, std::vector<Vec3> &)
