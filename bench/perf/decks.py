@@ -15,7 +15,7 @@ HARD = """pair_style      none
 neighbor        {skin!r} bin
 neigh_modify    delay 0 every 1 check yes
 fix             grav all gravity 1.0 vector 0 0 -1
-fix             hc all hardcontact solver {solver} tol {tol!r} {walls}
+fix             hc all hardcontact solver {solver} tol {tol!r} {fix_extra}{walls}
 timestep        {h!r}
 compute         zz all property/atom z
 compute         zavg all reduce ave c_zz
@@ -48,15 +48,18 @@ def start_line(start):
     return ("read_data       %s" if kind == "data" else "read_restart    %s") % path
 
 
-def hard(scene, start, solver, tol, phases, h=0.02, skin=0.3, ranks_2d=False, restart_out=None):
+def hard(scene, start, solver, tol, phases, h=0.02, skin=0.3, ranks_2d=False, restart_out=None,
+         fix_extra=""):
     """A hardcontact run: phases = [(steps, thermo_every, cap_seconds[, until]), ...], each a
     `run` stopped by fix halt after cap_seconds of wall time, or (until) once the kinetic energy
     per sphere is below until x m g d; thermo columns step time cpu ke f_hc[1,3,4,5,6,7,9] and
     the mean height c_zavg. ranks_2d: `processors * * 1` (domains split in x and y only).
-    restart_out: written after the first phase."""
+    restart_out: written after the first phase. fix_extra: more keywords of the fix (before
+    the walls), e.g. 'subspace 10'."""
     text = HEAD.format(processors="processors      * * 1\n" if ranks_2d else "",
                        start=start_line(start))
-    text += HARD.format(skin=skin, solver=solver, tol=tol, walls=scene["walls"], h=h)
+    text += HARD.format(skin=skin, solver=solver, tol=tol, walls=scene["walls"], h=h,
+                        fix_extra=fix_extra + " " if fix_extra else "")
     for k, phase in enumerate(phases):
         steps, every, cap = phase[:3]
         until = phase[3] if len(phase) > 3 else None

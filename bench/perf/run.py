@@ -52,7 +52,8 @@ def config(quick):
             tray_ratios=[1, 1000], tray_settle=150, tray_window=20,
             tray_solvers=["apgd", "pgs"], throughput=[(10, 5), (16, 5)], thr_steps=150, thr_cap=20.0,
             ts_pile=(8, 8, 10), soft_overlaps=[1e-3, 1e-4], soft_cap=40.0, mpi_tols=[1e-2],
-            still_layers=[5], still_steps=2000, still_cap=30.0, steps_h=[0.05, 0.1])
+            still_layers=[5], still_steps=2000, still_cap=30.0, steps_h=[0.05, 0.1],
+            subspace_window=40)
     return dict(
         footprint=10, layers=[5, 10, 20, 40], exact_layers=5, settle=lambda L: 200 + 20 * L,
         window=40, settle_cap=20.0, window_cap=12.0, long_cap=200.0,
@@ -61,7 +62,8 @@ def config(quick):
         thr_steps=250, thr_cap=45.0,
         ts_pile=(20, 20, 20), soft_overlaps=[1e-3, 1e-4, 1e-5, 1e-6], soft_cap=120.0,
         mpi_tols=[1e-4, 1e-2],
-        still_layers=[5, 10, 20], still_steps=6000, still_cap=300.0, steps_h=[0.05, 0.1])
+        still_layers=[5, 10, 20], still_steps=6000, still_cap=300.0, steps_h=[0.05, 0.1],
+        subspace_window=100)
 
 
 # The parts of a run (--only) and the groups of rows each writes
@@ -71,6 +73,8 @@ PART_OF_GROUP = dict(heights="heights", tray="tray", throughput="throughput", tt
 # "At rest" for the part still: kinetic energy per sphere below this x m g d (the windows of
 # the part heights start where the settle ends, at 1e-3 m g d: the piles still creep there)
 STILL_KE = 1e-10
+# cg's subspace start (subspace N) on the scenes at rest (parts still and tray)
+SUBSPACE = 10
 
 
 def loadavg():
@@ -124,6 +128,12 @@ class Bench:
             self.data[name] = scene
         return path
 
+    def pile(self, nx, ny, layers):
+        """The pile scene nx x ny x layers (bench/perf/scenes.py), its name and data file."""
+        sc = scenes.pile(nx, ny, layers)
+        name = "pile%dx%dx%d" % (nx, ny, layers)
+        return sc, name, self.datafile(sc, name)
+
     def launch(self, exe, deck, rundir, ranks=1, timeout=1800):
         """Run a deck (serial, or mpirun -np ranks); return (log text, wall s, load before,
         load after)."""
@@ -147,14 +157,14 @@ class Bench:
         return text, time.time() - t, before, loadavg()
 
     def hard(self, rid, group, scene, data, solver, tol, phases, names, extra=None,
-             start=None, restart_out=None, ranks=1, h=0.02, skin=0.3):
+             start=None, restart_out=None, ranks=1, h=0.02, skin=0.3, subspace=0):
         """One hardcontact run with the given phases [(steps, cap[, until])] (until: the phase
         ends once the kinetic energy per sphere is below until x m g d), thermo every step; one
         row per phase in perf_runs.csv."""
         rundir = self.work / rid
         start = start or ("data", str(data))
         deck = decks.hard(scene, start, solver, tol, [(p[0], 1) + tuple(p[1:]) for p in phases],
-                          h=h, skin=skin,
+                          h=h, skin=skin, fix_extra="subspace %d" % subspace if subspace else "",
                           ranks_2d=ranks > 1 or (extra or {}).get("mpi_ref", False),
                           restart_out=restart_out and str(rundir / restart_out))
         self.note("%s: %s tol %g, %d spheres, %s ranks %d" % (rid, solver, tol, scene["n"],
@@ -181,7 +191,7 @@ class Bench:
             ke = b["KinEng"] / scene["n"] / mgd
             row = dict(id=rid, group=group, phase=name, solver=solver, tol=tol, n=scene["n"],
                        layers=scene.get("layers", ""), ratio=scene.get("mass_ratio", ""),
-                       ranks=ranks, h=h, skin=skin,
+                       ranks=ranks, h=h, skin=skin, subspace=subspace,
                        # a phase with `until` is done when the pile came to rest, not at nreq steps
                        status=("ok" if ke[-1] < until else "capped") if until is not None
                        else ("ok" if done >= nreq else "capped"),
@@ -189,6 +199,8 @@ class Bench:
                        it_mean=float(it.mean()) if done else float("nan"),
                        it_median=float(np.median(it)) if done else float("nan"),
                        it_max=float(it.max()) if done else float("nan"),
+                       # the second half of the phase (subspace N builds up in the first steps)
+                       it_mean_2nd_half=float(it[done // 2:].mean()) if done >= 2 else float("nan"),
                        cand_mean=float(cand.mean()) if done else float("nan"),
                        active_mean=float(act.mean()) if done else float("nan"),
                        solves_mean=float(b["f_hc[9]"][sl].mean()) if done else float("nan"),
@@ -277,9 +289,7 @@ class Bench:
         c = self.cfg
         fp = c["footprint"]
         for L in c["layers"]:
-            sc = scenes.pile(fp, fp, L)
-            name = "pile%dx%dx%d" % (fp, fp, L)
-            data = self.datafile(sc, name)
+            sc, name, data = self.pile(fp, fp, L)
             settle, win = c["settle"](L), c["window"]
             rid = "heights_%s_%s" % (name, REF)
             self.hard(rid, "heights", sc, data, REF, 1e-4,
@@ -303,16 +313,20 @@ class Bench:
         c = self.cfg
         fp = c["footprint"]
         for L in c["still_layers"]:
-            sc = scenes.pile(fp, fp, L)
-            name = "pile%dx%dx%d" % (fp, fp, L)
-            data = self.datafile(sc, name)
+            sc, name, data = self.pile(fp, fp, L)
             restart = self.work / ("heights_%s_%s" % (name, REF)) / "settled.restart"
             if not restart.exists():
                 self.note("still_%s: no restart from the part heights (%s); skipped" % (name, restart))
                 continue
-            self.hard("still_%s_%s" % (name, REF), "still", sc, data, REF, 1e-4,
+            rid = "still_%s_%s" % (name, REF)
+            self.hard(rid, "still", sc, data, REF, 1e-4,
                       [(c["still_steps"], c["still_cap"], STILL_KE), (c["window"], c["long_cap"])],
-                      ["calm", "still"], start=("restart", str(restart)))
+                      ["calm", "still"], start=("restart", str(restart)), restart_out="calm.restart")
+            calm = self.work / rid / "calm.restart"
+            if calm.exists():    # the same window from the same state, cg's subspace start on
+                self.hard("still_%s_%s_subspace%d" % (name, REF, SUBSPACE), "still", sc, data, REF,
+                          1e-4, [(c["subspace_window"], c["long_cap"])], ["still"],
+                          start=("restart", str(calm)), subspace=SUBSPACE)
 
     def tray(self):
         c = self.cfg
@@ -325,6 +339,10 @@ class Bench:
                       [(c["tray_settle"], 60.0), (c["tray_window"], 60.0)], ["settle", "rest"],
                       restart_out="settled.restart")
             restart = self.work / rid / "settled.restart"
+            if restart.exists():
+                self.hard("tray_%s_%s_subspace%d_rest" % (name, REF, SUBSPACE), "tray", sc, data, REF,
+                          1e-4, [(c["subspace_window"], c["window_cap"])], ["rest"],
+                          start=("restart", str(restart)), subspace=SUBSPACE)
             for solver in c["tray_solvers"]:
                 if solver != REF and restart.exists():
                     self.hard("tray_%s_%s_rest" % (name, solver), "tray", sc, data, solver, 1e-4,
@@ -334,9 +352,7 @@ class Bench:
     def throughput(self):
         c = self.cfg
         for fp, L in c["throughput"]:
-            sc = scenes.pile(fp, fp, L)
-            name = "pile%dx%dx%d" % (fp, fp, L)
-            data = self.datafile(sc, name)
+            sc, name, data = self.pile(fp, fp, L)
             self.hard("throughput_%s_%s" % (name, REF), "throughput", sc, data, REF, 1e-4,
                       [(c["thr_steps"], c["thr_cap"])], ["settle"])
 
@@ -346,9 +362,7 @@ class Bench:
         overlaps 1e-3.. and the 10 x 10 x 20 pile's twin, then 2 ranks."""
         c = self.cfg
         nx, ny, L = c["ts_pile"]
-        sc = scenes.pile(nx, ny, L)
-        name = "pile%dx%dx%d" % (nx, ny, L)
-        data = self.datafile(sc, name)
+        sc, name, data = self.pile(nx, ny, L)
         steps = c["settle"](L)
         duration = steps * 0.02
         for tol in (1e-4, 1e-2):
@@ -362,9 +376,7 @@ class Bench:
         # the stiffness sweep on the smaller pile of the heights series (same duration)
         fp = c["footprint"]
         L2 = max(l for l in c["layers"] if l <= L)
-        sc2 = scenes.pile(fp, fp, L2)
-        name2 = "pile%dx%dx%d" % (fp, fp, L2)
-        data2 = self.datafile(sc2, name2)
+        sc2, name2, data2 = self.pile(fp, fp, L2)
         steps2 = c["settle"](L2)
         self.hard("tts_%s_%s_tol0.01" % (name2, REF), "tts", sc2, data2, REF, 1e-2, [(steps2, 200.0)],
                   ["settle"])
@@ -381,9 +393,7 @@ class Bench:
         overlap of 1e-3, all in this part so that the ratios come from one run."""
         c = self.cfg
         nx, ny, L = c["ts_pile"]
-        sc = scenes.pile(nx, ny, L)
-        name = "pile%dx%dx%d" % (nx, ny, L)
-        data = self.datafile(sc, name)
+        sc, name, data = self.pile(nx, ny, L)
         duration = c["settle"](L) * 0.02
         for h in [0.02] + c["steps_h"]:
             n = int(round(duration / h))
@@ -397,9 +407,7 @@ class Bench:
         and its soft twin at a static overlap of 1e-3."""
         c = self.cfg
         nx, L = (20, 10) if self.a.quick else (80, 10)
-        sc = scenes.pile(nx, nx, L)
-        name = "pile%dx%dx%d" % (nx, nx, L)
-        data = self.datafile(sc, name)
+        sc, name, data = self.pile(nx, nx, L)
         steps = c["settle"](L)
         self.hard("tts_%s_%s_tol0.0001" % (name, REF), "tts", sc, data, REF, 1e-4,
                   [(steps, 1200.0)], ["settle"], extra=dict(mpi_ref=True))
