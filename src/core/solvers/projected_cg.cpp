@@ -21,9 +21,9 @@ void ProjectedCg::start(const SolverSettings &s, std::vector<double> &mu, std::v
 {
   const ContactProblem &p = op_.problem();
   const int nc = p.n_contacts();
-  // The past corrections are per row: they hold while the rows are the same ones (no new
-  // neighbour list, no row gained or lost), on every process, or they are dropped everywhere
-  // (the subspace must have the same dimension on every process).
+  // The past corrections are per row: they follow the rows by their bodies (carry_past) while
+  // the bodies keep their numbers; a new neighbour list renumbers them, and then they are
+  // dropped on every process (the subspace must have the same dimension everywhere).
   if (s.subspace > 0) {
     if (op_.ops().max_all(p.renumbered ? 1.0 : 0.0) > 0.0) {
       past_.clear();
@@ -152,7 +152,8 @@ void ProjectedCg::carry_past()
   };
   std::unordered_map<unsigned long long, int> old;
   old.reserve(past_i_.size());
-  for (size_t c = 0; c < past_i_.size(); ++c) old.emplace(key(past_i_[c], past_j_[c]), static_cast<int>(c));
+  for (size_t c = 0; c < past_i_.size(); ++c)
+    old.emplace(key(past_i_[c], past_j_[c]), static_cast<int>(c));
   const int nc = p.n_contacts();
   std::vector<int> from(nc, -1);
   for (int c = 0; c < nc; ++c) {
