@@ -31,7 +31,7 @@ set -uo pipefail
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 BUILD_DIR="${1:-${HARDCONTACT_SANITIZE_DIR:-$ROOT/build-sanitize}}"
 SAN="-fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=all"
-SANITIZE_DECKS='^(smoke_np1|launcher_np1|stab_degenerate_np1|stab_step_sweep_free_np1|stab_step_sweep_free_cg_np1|stab_crystal_2d_np1|stab_polydisperse_np1)$'
+SANITIZE_DECKS='^(smoke_np1|launcher_np1|stab_degenerate_np1|stab_step_sweep_free_np1|stab_step_sweep_free_cg_np1|stab_crystal_2d_np1|stab_polydisperse_np1|phys_subspace_np1)$'
 
 echo "sanitize: building $BUILD_DIR ($SAN, RelWithDebInfo)"
 if ! HARDCONTACT_BUILD_DIR="$BUILD_DIR" bash "$ROOT/.ci/build.sh" \

@@ -13,6 +13,14 @@ namespace hardcontact {
 using Vec3 = Eigen::Vector3d;
 static_assert(sizeof(Vec3) == 3 * sizeof(double), "Vec3 arrays are exchanged as raw doubles");
 
+// The doubles of a Vec3 array, 3 per element (nullptr when empty: v.data()->data() would call
+// a member function through a null pointer, which UBSan reports, on a process without atoms).
+inline double *doubles(std::vector<Vec3> &v) { return v.empty() ? nullptr : v[0].data(); }
+inline const double *doubles(const std::vector<Vec3> &v)
+{
+  return v.empty() ? nullptr : v[0].data();
+}
+
 // Bodies 0..n_owned-1 are integrated here; bodies n_owned..n_bodies()-1 are copies owned
 // elsewhere (ghosts): their velocities arrive through DistributedOps::forward.
 // inv_mass = 0 marks a body whose velocity the contacts cannot change (an obstacle).
@@ -182,7 +190,7 @@ struct ContactProblem {
 struct RowKernel {
   explicit RowKernel(const ContactProblem &p)
       : h(p.h), n_owned(p.n_owned), body_i(p.body_i.data()), body_j(p.body_j.data()),
-        normal(p.normal.data()->data()), inv_mass(p.inv_mass.data())
+        normal(doubles(p.normal)), inv_mass(p.inv_mass.data())
   {
   }
   // n_c . (u_j - u_i) (u_wall = 0): (n0 d0 + n1 d1) + n2 d2, d = u_j - u_i or 0 - u_i
@@ -226,7 +234,7 @@ struct RowKernel {
 
 inline double ContactProblem::normal_speed(int c, const std::vector<Vec3> &u) const
 {
-  return RowKernel(*this).normal_speed(c, u.data()->data());
+  return RowKernel(*this).normal_speed(c, doubles(u));
 }
 
 }    // namespace hardcontact

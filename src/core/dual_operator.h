@@ -44,7 +44,7 @@ class DualOperator {
     start_velocities(u);
     if constexpr (B == 1) {
       const RowKernel k(*p_);
-      double *v = u.data()->data();
+      double *v = doubles(u);
       for (const int c : rows) {
         const double *m = mu_of(c);
         if (m[0] != 0.0) k.apply(c, m[0], v);
@@ -90,7 +90,7 @@ class DualOperator {
         for (const int b : *moved) w[nb + b] = Vec3::Zero();
     }
     const RowKernel k(p);
-    double *v = w.data()->data();
+    double *v = doubles(w);
     for (const int c : rows) {
       const double m = m_of(c);
       if (m != 0.0) k.apply(c, m, v);
@@ -106,8 +106,8 @@ class DualOperator {
   // Ghost copies of u from their owners (after in-place updates with apply()).
   void forward(std::vector<Vec3> &u) const
   {
-    ops_->forward(u.data()->data(), 3);
-    if (p_->rotates()) ops_->forward(u[p_->n_bodies()].data(), 3);
+    ops_->forward(doubles(u), 3);
+    if (p_->rotates()) ops_->forward(doubles(u) + 3 * p_->n_bodies(), 3);
   }
 
   // g_c(u) = D_c + h G_c u, eq. 15: also the gradient of the dual objective at mu(u).
@@ -136,7 +136,7 @@ class DualOperator {
   // Adds the velocity change of an impulse h dmu G_c to the owned bodies of row c.
   void apply(int c, double dmu, std::vector<Vec3> &u) const
   {
-    RowKernel(*p_).apply(c, dmu, u.data()->data());
+    RowKernel(*p_).apply(c, dmu, doubles(u));
   }
   // The same for a block: with friction the impulse h (m_n n + m_1 t_1 + m_2 t_2) acts on j
   // at -a_j n and its opposite on i at +a_i n (the arms), so both spin by -a I^-1 n x impulse.

@@ -59,7 +59,7 @@ StepResult ContactStep::solve(Solver &solver, const SolverSettings &settings,
     const int nlocal = atom->nlocal;
     u_start_.resize(nlocal + atom->nghost);
     for (int i = 0; i < nlocal; ++i) u_start_[i] = Vec3(atom->v[i]);
-    ops_.forward(u_start_.data()->data(), kDoublesPerVec3);
+    ops_.forward(doubles(u_start_), kDoublesPerVec3);
     targets.u_start = &u_start_;
     targets.restitution = &row_e_;
     targets.bounce_vmin = effects.bounce_vmin;
@@ -243,7 +243,7 @@ Bodies ContactStep::build_bodies(bool needs_owner_map, const StepEffects &effect
   double global[2];
   MPI_Allreduce(local, global, 2, MPI_DOUBLE, MPI_MAX, world);
   reach_.check_radius(global[1]);
-  ops_.forward(problem_.u_free.data()->data(), kDoublesPerVec3);
+  ops_.forward(doubles(problem_.u_free), kDoublesPerVec3);
 
   // Friction: the bodies rotate. omega^n + h I^-1 torque, as fix nve/sphere would (its full
   // step); obstacles (outside the group) have 1/I = 0.
@@ -261,7 +261,7 @@ Bodies ContactStep::build_bodies(bool needs_owner_map, const StepEffects &effect
       if (mask[i] & groupbit_) w += (update->dt * problem_.inv_inertia[i]) * Vec3(torque[i]);
       problem_.w_free[i] = w;
     }
-    ops_.forward(problem_.w_free.data()->data(), kDoublesPerVec3);
+    ops_.forward(doubles(problem_.w_free), kDoublesPerVec3);
   } else {
     problem_.inv_inertia.clear();
     problem_.radius.clear();
@@ -272,7 +272,7 @@ Bodies ContactStep::build_bodies(bool needs_owner_map, const StepEffects &effect
   // then measured as (x_j - x_i) + k L on both processes holding it (PairSource).
   x_owner_.resize(nall);
   for (int i = 0; i < nlocal; ++i) x_owner_[i] = Vec3(atom->x[i]);
-  ops_.forward(x_owner_.data()->data(), kDoublesPerVec3);
+  ops_.forward(doubles(x_owner_), kDoublesPerVec3);
 
   // Round-off of a predicted gap: coordinates of size X carry errors of eps X, and h u of
   // eps h |u|. The solvers never ask for less (core/residual.h).

@@ -259,7 +259,7 @@ double ProjectedCg::product(const std::vector<double> &mu, double gamma)
       },
       w_, &moved_);
   const RowKernel k(p);
-  const double *w = w_.data()->data();
+  const double *w = doubles(w_);
   const char *counted = p.counted.data();
   double gd = 0.0, dq = 0.0;
   double ratio = 0.0;
