@@ -77,5 +77,5 @@ hardcontact_deck_test(NAME phys_skin_lookahead SCRIPT integration/test_phys_skin
 # height, no overlap beyond tol, at most half the iterations; ranks take the same coefficients
 foreach(_np 1 2 4)
   hardcontact_deck_test(NAME phys_subspace_np${_np} SCRIPT integration/test_phys_subspace.py
-                        NP ${_np} LABELS physics TIMEOUT 300 HOSTS launcher modern)
+                        NP ${_np} LABELS physics TIMEOUT 300 HOSTS launcher modern liggghts)
 endforeach()
