@@ -62,7 +62,7 @@ def config(quick):
         thr_steps=250, thr_cap=45.0,
         ts_pile=(20, 20, 20), soft_overlaps=[1e-3, 1e-4, 1e-5, 1e-6], soft_cap=120.0,
         mpi_tols=[1e-4, 1e-2],
-        still_layers=[5, 10, 20], still_steps=6000, still_cap=300.0, steps_h=[0.05, 0.1],
+        still_layers=[5, 10, 20], still_steps=6000, still_cap=300.0, steps_h=[0.05, 0.1, 0.2],
         subspace_window=100)
 
 
