@@ -1,4 +1,4 @@
-// The subspace start (SolverSettings::subspace) shared by cg and apgd: a solver's last N
+// The subspace start (SolverSettings::subspace) shared by cg and apgd (frictionless): a solver's last N
 // corrections W (answer - warm start, per row block) and their products A W, kept from step to
 // step, and the best point of the dual objective phi over mu + W c.
 //
@@ -24,7 +24,10 @@ namespace hardcontact {
 
 class PastCorrections {
  public:
-  // block: multipliers per row (1 frictionless, 3 friction, 5 rolling)
+  // block: multipliers per row (the law's; 1 frictionless). With friction the start was tried
+  // and not kept (doc/performance.md, section 10.4): the best point of the span leaves the
+  // cone far, its projection raises phi, and the tangential pairs would also have to follow the
+  // tangents the host derives from each step's normal.
   explicit PastCorrections(int block) : block_(block) {}
 
   bool empty() const { return w_.empty(); }
@@ -37,6 +40,23 @@ class PastCorrections {
   // A new neighbour list renumbers the bodies: then every process drops them (the subspace
   // must have the same dimension everywhere).
   void follow(const ContactProblem &p, DistributedOps &ops);
+  // The rows a kept correction moves (f(c) for each): they join the working set before the
+  // start is moved, so that W^T A W over the set is the one the products were made for (a row
+  // that left the set would otherwise count in A W and not in W: the predicted decrease of
+  // phi was then wrong, and most moves were refused).
+  template <class F>
+  void rows_used(F &&f) const
+  {
+    if (w_.empty()) return;
+    const size_t B = static_cast<size_t>(block_);
+    const size_t nc = w_[0].size() / B;
+    for (size_t c = 0; c < nc; ++c) {
+      bool used = false;
+      for (size_t a = 0; a < w_.size() && !used; ++a)
+        for (size_t k = 0; k < B; ++k) used = used || w_[a][B * c + k] != 0.0;
+      if (used) f(static_cast<int>(c));
+    }
+  }
   // After a solve: the correction d and its product ad (block per row, every row of p), the
   // newest first; at most `keep` are kept.
   void record(std::vector<double> d, std::vector<double> ad, const ContactProblem &p, int keep);

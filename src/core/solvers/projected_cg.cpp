@@ -23,6 +23,7 @@ void ProjectedCg::start(const SolverSettings &s, std::vector<double> &mu, std::v
   // The past corrections follow the rows by their bodies (past_corrections.h)
   if (s.subspace > 0) {
     past_.follow(p, op_.ops());
+    past_.rows_used([&](int c) { set_.include(c); });
     warm_.assign(mu.begin(), mu.begin() + nc);
   } else {
     past_.clear();
