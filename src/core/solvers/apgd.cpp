@@ -176,15 +176,17 @@ void ApgdSolver<Law>::finished(const SolverSettings &s, const std::vector<double
   past_.record(std::move(d), std::move(ad), p, s.subspace);
 }
 
-// A stalled solve (the residual has not fallen below kStallGain x its best for
-// kStallIterations iterations) gets one Gauss-Seidel sweep over the rows it still violates.
-// Measured on a frictional 20-layer pile at rest (2000 spheres, mu = 0.5, tol 1e-4): a new
-// contact left six sticking contacts at 1.3-1.4 x tol; apgd's global step moved the
-// indeterminate tangential forces of the whole pile instead, the residual wandered up to 1e-2
-// and 40 solves in a row stopped at maxiter (10000) with overlaps of 1e-3 x tol, while a sweep
-// of the six rows alone converged at once. A sweep of every row, or one every few iterations,
-// ruins apgd where it is good (a heavy sphere on light ones: 780 -> 9000+ it/step), so only
-// the violated rows, only when stalled. The momentum is kept: y and g(y) do not depend on mu.
+// A stalled solve (past kPolishAfter iterations, the residual not below kStallGain x its best
+// for kStallIterations) goes on with Gauss-Seidel sweeps over the rows it still violates, as
+// long as each lowers the residual; a sweep that does not is undone and apgd resumes, its
+// momentum kept (y and g(y) do not depend on mu). Measured on a frictional 20-layer pile at rest
+// (2000 spheres, mu = 0.5, tol 1e-4, doc/performance.md section 10.4): a new contact left a few
+// sticking contacts at 1.3-1.8 x tol; apgd's one global step moved the indeterminate tangential
+// forces of the whole pile instead, the residual wandered up to 1e-2 and 40 solves in a row
+// stopped at maxiter (10000), while pgs converged in 9-14 sweeps. Sweeping sooner or more
+// often ruins apgd where it is good and Gauss-Seidel is not (a heavy sphere on light ones:
+// 780 -> 9000+ it/step with a sweep every 10 iterations; rolling settles +50 % with polishing
+// from iteration 50), hence only late, only the violated rows, only while they help.
 template <class Law>
 bool ApgdSolver<Law>::polish(const SolverSettings &s, std::vector<double> &mu, std::vector<Vec3> &u)
 {

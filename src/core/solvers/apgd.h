@@ -43,7 +43,8 @@ class ApgdSolver : public IterativeSolver<Law> {
   // if phi fell. Needs u = u(mu), g_ = g(mu) on the set rows; leaves them so.
   void subspace_start(std::vector<double> &mu, std::vector<Vec3> &u);
   // One Gauss-Seidel sweep (block_sweep.h) over the set rows the iterate violates by more than
-  // tol, in place of an iteration of a stalled solve (apgd.cpp: why).
+  // tol, in place of an iteration of a stalled solve (apgd.cpp: why); false (and undone) if
+  // the residual did not fall.
   bool polish(const SolverSettings &s, std::vector<double> &mu, std::vector<Vec3> &u);
 
   double L_ = 0.0;        // Lipschitz estimate of grad phi (friction: in x = D^1/2 mu)
@@ -54,7 +55,8 @@ class ApgdSolver : public IterativeSolver<Law> {
     return l > 0.0 ? 1.0 / l : 0.0;
   }
   double theta_ = 1.0;    // Nesterov's sequence
-  // Stall watch (polish()): the best residual of this solve and the iteration it was reached
+  // Stall watch (polish()): the best residual of this solve and the iteration it was reached;
+  // sweeping_: polishing until a sweep fails
   static constexpr int kStallIterations = 50;
   static constexpr double kStallGain = 0.7;
   static constexpr int kPolishAfter = 500;
