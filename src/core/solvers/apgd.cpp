@@ -176,17 +176,19 @@ void ApgdSolver<Law>::finished(const SolverSettings &s, const std::vector<double
   past_.record(std::move(d), std::move(ad), p, s.subspace);
 }
 
-// A stalled solve (past kPolishAfter iterations, the residual not below kStallGain x its best
+// With friction, a stalled solve (past kPolishAfter iterations, the residual not below kStallGain x its best
 // for kStallIterations) goes on with Gauss-Seidel sweeps over the rows it still violates, as
-// long as each lowers the residual; a sweep that does not is undone and apgd resumes, its
-// momentum kept (y and g(y) do not depend on mu). Measured on a frictional 20-layer pile at rest
+// long as each lowers the residual and they do not stall in turn (Gauss-Seidel converges slowly
+// at tight tolerances); a sweep that does not help is undone and apgd resumes, its momentum kept (y and g(y) do not depend on mu). Measured on a frictional 20-layer pile at rest
 // (2000 spheres, mu = 0.5, tol 1e-4, doc/performance.md section 10.4): a new contact left a few
 // sticking contacts at 1.3-1.8 x tol; apgd's one global step moved the indeterminate tangential
 // forces of the whole pile instead, the residual wandered up to 1e-2 and 40 solves in a row
 // stopped at maxiter (10000), while pgs converged in 9-14 sweeps. Sweeping sooner or more
 // often ruins apgd where it is good and Gauss-Seidel is not (a heavy sphere on light ones:
 // 780 -> 9000+ it/step with a sweep every 10 iterations; rolling settles +50 % with polishing
-// from iteration 50), hence only late, only the violated rows, only while they help.
+// from iteration 50), hence only late, only the violated rows, only while they help. Without
+// friction (where cg is the default) apgd is left as it was: at tol 1e-10 the sweeps made
+// large steps of free spheres stop at maxiter (test stab_step_sweep).
 template <class Law>
 bool ApgdSolver<Law>::polish(const SolverSettings &s, std::vector<double> &mu, std::vector<Vec3> &u)
 {
@@ -198,6 +200,7 @@ bool ApgdSolver<Law>::polish(const SolverSettings &s, std::vector<double> &mu, s
   start_mu_ = mu;
   start_g_ = g;
   start_u_ = u;
+  this->op_.count_degrees(rows);    // the step of rows shared with another process
   block_sweep<Law>(this->op_, stalled_rows_, g, sweep_, mu, u);
   double r = 0.0;
   for (const int c : rows) {
@@ -262,19 +265,21 @@ template <class Law>
 bool ApgdSolver<Law>::step(const SolverSettings &s, std::vector<double> &mu, std::vector<Vec3> &u)
 {
   if (L_ <= 0.0) return false;
-  // the stall watch, from the last verdict's residual (all processes: they agree)
-  if (this->last_residual_ < kStallGain * best_residual_) {
-    best_residual_ = this->last_residual_;
-    improved_at_ = iteration_;
-  }
-  if (++iteration_ - improved_at_ >= kStallIterations && iteration_ >= kPolishAfter) {
-    improved_at_ = iteration_;
-    sweeping_ = true;
-  }
-  if (sweeping_) {
-    if (polish(s, mu, u)) return true;
-    sweeping_ = false;    // a sweep that did not help: apgd again, its momentum kept
-    improved_at_ = iteration_;
+  // the stall watch (friction only), from the last verdict's residual (all processes agree)
+  if constexpr (B > 1) {
+    if (this->last_residual_ < kStallGain * best_residual_) {
+      best_residual_ = this->last_residual_;
+      improved_at_ = iteration_;
+    }
+    if (++iteration_ - improved_at_ >= kStallIterations && iteration_ >= kPolishAfter) {
+      improved_at_ = iteration_;
+      sweeping_ = !sweeping_;    // stalled: sweeps; sweeps stalled too: apgd again
+    }
+    if (sweeping_) {
+      if (polish(s, mu, u)) return true;
+      sweeping_ = false;    // a sweep that did not help: apgd again, its momentum kept
+      improved_at_ = iteration_;
+    }
   }
   const ContactProblem &p = this->op_.problem();
   const std::vector<int> &rows = this->set_.rows();
