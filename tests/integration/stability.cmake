@@ -67,11 +67,6 @@ foreach(_case pile2d column)
   endforeach()
 endforeach()
 
-# a frictional 3D pile (2000 spheres, mu = 0.5, apgd) at rest for 1000 steps: no solve at
-# maxiter, no overlap beyond tol, nothing moves (apgd's polish of stalled solves); soak: ~4 min
-hardcontact_deck_test(NAME stab_friction_rest_soak_np1 HOSTS launcher SCRIPT integration/test_stab_friction_rest.py
-  NP 1 LABELS "stability;soak" ARGS --timeout 1500 TIMEOUT 1800)
-
 # degenerate geometry: gap 0, coincident centres, spheres touching walls, all at rest, chains
 hardcontact_deck_test(NAME stab_degenerate_np1 HOSTS launcher SCRIPT integration/test_stab_degenerate.py NP 1
   LABELS stability ARGS --timeout 30 TIMEOUT 240)

@@ -1,10 +1,7 @@
 #include "apgd.h"
 
-#include "block_sweep.h"
-
 #include <algorithm>
 #include <cmath>
-#include <limits>
 
 namespace hardcontact {
 
@@ -83,13 +80,6 @@ void ApgdSolver<Law>::start(const SolverSettings &s, std::vector<double> &mu,
 {
   const int nc = this->op_.problem().n_contacts();
   const size_t n = static_cast<size_t>(B) * nc;
-  if (s.subspace > 0) {
-    past_.follow(this->op_.problem(), this->op_.ops());
-    past_.rows_used([&](int c) { this->set_.include(c); });
-    warm_.assign(mu.begin(), mu.begin() + static_cast<std::ptrdiff_t>(n));
-  } else {
-    past_.clear();
-  }
   for (auto *v : {&b_, &y_, &gy_, &next_, &gnext_}) v->assign(n, 0.0);
   std::fill(this->g_.begin(), this->g_.end(), 0.0);
   this->op_.free_velocities(u);
@@ -98,7 +88,6 @@ void ApgdSolver<Law>::start(const SolverSettings &s, std::vector<double> &mu,
     if constexpr (B > 1) b_[static_cast<size_t>(B) * c] -= this->op_.shift(c);
   }
   gaps(mu, this->g_, u);
-  if (s.subspace > 0 && !past_.empty()) subspace_start(mu, u);
   if constexpr (B == 1) {
     // Start L below the Gershgorin bound of the working set: backtracking raises it as needed.
     L_ = s.rho > 0.0 ? 1.0 / s.rho : 0.25 * this->op_.template bound<B>(this->set_.rows());
@@ -110,113 +99,6 @@ void ApgdSolver<Law>::start(const SolverSettings &s, std::vector<double> &mu,
   restart(mu);
   this->rho_ = report_rho();
   residual_ready_ = false;
-  best_residual_ = std::numeric_limits<double>::infinity();
-  iteration_ = improved_at_ = 0;
-  sweeping_ = false;
-}
-
-// As cg's (projected_cg.cpp), with the law's projection of each row's block (the cone with
-// friction) instead of the clip at 0; the shifts stay those of the warm start (the fixed point
-// moves them, as after any start). phi(mu1) - phi(mu) = (mu1 - mu).(g + g1) / 2 with the same
-// linear term. Every sum is over counted rows and all processes: every process takes the same
-// c, and a row held by two processes the same multipliers.
-template <class Law>
-void ApgdSolver<Law>::subspace_start(std::vector<double> &mu, std::vector<Vec3> &u)
-{
-  const ContactProblem &p = this->op_.problem();
-  const std::vector<int> &rows = this->set_.rows();
-  std::vector<double> &g = this->g_;
-  Eigen::VectorXd coef;
-  if (!past_.coefficients(p, rows, g, this->op_.ops(), coef)) return;
-  start_mu_ = mu;
-  start_g_ = g;
-  start_u_ = u;
-  for (const int c : rows) {
-    double *m = &mu[static_cast<size_t>(B) * c];
-    for (int k = 0; k < B; ++k) m[k] = past_.moved(m[k], coef, static_cast<size_t>(B) * c + k);
-    Law::project(m, this->coef(c));
-  }
-  gaps(mu, g, u);
-  double change = 0.0;
-  for (const int c : rows) {
-    if (!p.counted[c]) continue;
-    for (int k = 0; k < B; ++k) {
-      const size_t a = static_cast<size_t>(B) * c + k;
-      change += 0.5 * (mu[a] - start_mu_[a]) * (start_g_[a] + g[a]);
-    }
-  }
-  if (this->op_.ops().sum_all(change) < 0.0) return;
-  mu.swap(start_mu_);    // phi did not fall: the warm start as it came
-  g.swap(start_g_);
-  u.swap(start_u_);
-}
-
-// The correction of this solve and its product A d (gaps of u(d) less the linear term, one
-// product with this step's A), kept for the next solves' starts.
-template <class Law>
-void ApgdSolver<Law>::finished(const SolverSettings &s, const std::vector<double> &mu,
-                               const std::vector<Vec3> &)
-{
-  if (s.subspace <= 0) return;
-  const ContactProblem &p = this->op_.problem();
-  const std::vector<int> &rows = this->set_.rows();
-  const size_t n = static_cast<size_t>(B) * p.n_contacts();
-  std::vector<double> d(n, 0.0), ad(n, 0.0);
-  for (const int c : rows)
-    for (int k = 0; k < B; ++k) {
-      const size_t a = static_cast<size_t>(B) * c + k;
-      d[a] = mu[a] - warm_[a];
-    }
-  this->op_.template velocities<B>(rows, d, start_u_);
-  for (const int c : rows) {
-    double *q = &ad[static_cast<size_t>(B) * c];
-    this->op_.template gap_block<B>(c, start_u_, q);
-    for (int k = 0; k < B; ++k) q[k] -= linear(c, k);
-  }
-  past_.record(std::move(d), std::move(ad), p, s.subspace);
-}
-
-// With friction, a stalled solve (past kPolishAfter iterations, the residual not below kStallGain x its best
-// for kStallIterations) goes on with Gauss-Seidel sweeps over the rows it still violates, as
-// long as each lowers the residual and they do not stall in turn (Gauss-Seidel converges slowly
-// at tight tolerances); a sweep that does not help is undone and apgd resumes, its momentum kept (y and g(y) do not depend on mu). Measured on a frictional 20-layer pile at rest
-// (2000 spheres, mu = 0.5, tol 1e-4, doc/performance.md section 10.4): a new contact left a few
-// sticking contacts at 1.3-1.8 x tol; apgd's one global step moved the indeterminate tangential
-// forces of the whole pile instead, the residual wandered up to 1e-2 and 40 solves in a row
-// stopped at maxiter (10000), while pgs converged in 9-14 sweeps. Sweeping sooner or more
-// often ruins apgd where it is good and Gauss-Seidel is not (a heavy sphere on light ones:
-// 780 -> 9000+ it/step with a sweep every 10 iterations; rolling settles +50 % with polishing
-// from iteration 50), hence only late, only the violated rows, only while they help. Without
-// friction (where cg is the default) apgd is left as it was: at tol 1e-10 the sweeps made
-// large steps of free spheres stop at maxiter (test stab_step_sweep).
-template <class Law>
-bool ApgdSolver<Law>::polish(const SolverSettings &s, std::vector<double> &mu, std::vector<Vec3> &u)
-{
-  const std::vector<int> &rows = this->set_.rows();
-  std::vector<double> &g = this->g_;
-  stalled_rows_.clear();
-  for (const int c : rows)    // g_ = g(mu): a row two processes hold is chosen by both
-    if (this->set_violation(c, mu, 0.0) > s.tol) stalled_rows_.push_back(c);
-  start_mu_ = mu;
-  start_g_ = g;
-  start_u_ = u;
-  this->op_.count_degrees(rows);    // the step of rows shared with another process
-  block_sweep<Law>(this->op_, stalled_rows_, g, sweep_, mu, u);
-  double r = 0.0;
-  for (const int c : rows) {
-    this->op_.template gap_block<B>(c, u, &g[static_cast<size_t>(B) * c]);
-    r = std::max(r, this->set_violation(c, mu, r));
-  }
-  if (this->op_.ops().max_all(r) < this->last_residual_) {
-    residual_ = r;
-    residual_ready_ = true;
-    return true;
-  }
-  mu.swap(start_mu_);
-  g.swap(start_g_);
-  u.swap(start_u_);
-  residual_ready_ = false;
-  return false;
 }
 
 // g(mu) is maintained by the iteration: no product needed for the residual, and after a step
@@ -262,25 +144,9 @@ void ApgdSolver<Law>::shifted(const SolverSettings &, std::vector<double> &, std
 // its gaps fused with the sums of the backtracking test, and the update fused with the
 // residual of the next verdict.
 template <class Law>
-bool ApgdSolver<Law>::step(const SolverSettings &s, std::vector<double> &mu, std::vector<Vec3> &u)
+bool ApgdSolver<Law>::step(const SolverSettings &, std::vector<double> &mu, std::vector<Vec3> &u)
 {
   if (L_ <= 0.0) return false;
-  // the stall watch (friction only), from the last verdict's residual (all processes agree)
-  if constexpr (B > 1) {
-    if (this->last_residual_ < kStallGain * best_residual_) {
-      best_residual_ = this->last_residual_;
-      improved_at_ = iteration_;
-    }
-    if (++iteration_ - improved_at_ >= kStallIterations && iteration_ >= kPolishAfter) {
-      improved_at_ = iteration_;
-      sweeping_ = !sweeping_;    // stalled: sweeps; sweeps stalled too: apgd again
-    }
-    if (sweeping_) {
-      if (polish(s, mu, u)) return true;
-      sweeping_ = false;    // a sweep that did not help: apgd again, its momentum kept
-      improved_at_ = iteration_;
-    }
-  }
   const ContactProblem &p = this->op_.problem();
   const std::vector<int> &rows = this->set_.rows();
   std::vector<double> &g = this->g_;

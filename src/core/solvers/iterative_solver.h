@@ -89,7 +89,6 @@ class IterativeSolver : public Solver {
       if (verdict == Verdict::Grown) grown(s, mu, u);
       if (k >= s.maxiter) break;
       if (verdict == Verdict::Grown) continue;
-      last_residual_ = report.residual;
       if (!step(s, mu, u)) break;    // the method broke down: report the iterate
     }
     finished(s, mu, u);
@@ -184,7 +183,6 @@ class IterativeSolver : public Solver {
   // changes only g_'s normal components, so it stays current through move_shifts().
   std::vector<double> law_shift_;
   double rho_ = 0.0;         // the step the method used, reported (0: none)
-  double last_residual_ = 0.0;    // the residual of the verdict before step(), all processes
 
  private:
   // Measured on a settling 3D pile (726 spheres, mu = 0.5, apgd): updating only once the
