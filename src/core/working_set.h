@@ -38,6 +38,13 @@ class WorkingSet {
   // returns how many (local).
   int expand(const ContactProblem &p, const std::vector<Vec3> &u, double tol);
 
+  // Row c joins the set (at its multiplier; a row in the set may hold 0)
+  void include(int c)
+  {
+    if (member_[c]) return;
+    rows_.push_back(c);
+    member_[c] = 1;
+  }
   const std::vector<int> &rows() const { return rows_; }
   bool contains(int c) const { return member_[c] != 0; }
   // Row c's violation in units of its scale, the quantity compared with tol (g, m: the row's

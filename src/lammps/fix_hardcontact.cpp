@@ -48,11 +48,14 @@ hardcontact::FixOptions checked_options(LAMMPS *lmp, int narg, char **arg)
                                      "uzawa with friction",
                                      o.solver_name);
   }
-  if (o.settings.subspace > 0 && o.solver_name != "cg")
+  if (o.settings.subspace > 0 && o.solver_name != "cg" && o.solver_name != "apgd")
     hardcontact::compat::error_all(lmp->error, FLERR,
-                                   "Fix hardcontact subspace applies to solver cg (the default "
-                                   "without friction), not {}: remove subspace or use solver cg",
+                                   "Fix hardcontact subspace applies to solvers cg and apgd (the "
+                                   "defaults), not {}: remove subspace or use cg or apgd",
                                    o.solver_name);
+  if (o.settings.subspace > 0 && o.has_friction())
+    lmp->error->all(FLERR, "Fix hardcontact subspace applies without friction only (with "
+                           "friction its start leaves the cone): remove subspace or friction");
   return o;
 }
 

@@ -280,7 +280,8 @@ const Keyword keywords[] = {
     {"maxiter", 1, 0, parse_maxiter, "maxiter N: at most N solver iterations per solve"},
     {"rho", 1, 0, parse_rho, "rho value: fixed solver step (omit: automatic)"},
     {"subspace", 1, 0, parse_subspace,
-     "subspace N: cg starts from the best point in the span of its last N corrections (0: off)"},
+     "subspace N: cg or apgd (frictionless) start from the best point in the span of the last N "
+     "corrections (0: off)"},
     {"warmstart", 1, 0, parse_warmstart, "warmstart yes/no: start from the last step's forces"},
     {"wall", 2, 1, parse_wall,
      "wall xplane|yplane|zplane lo hi: flat walls, NULL for none, v_name for a moving one; "

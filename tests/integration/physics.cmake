@@ -73,7 +73,7 @@ endforeach()
 hardcontact_deck_test(NAME phys_skin_lookahead SCRIPT integration/test_phys_skin_lookahead.py
                       NP 1 LABELS physics TIMEOUT 300 HOSTS launcher modern liggghts)
 
-# cg's subspace start (subspace N): a heavy sphere at rest on a tray, with and without: same
+# the subspace start (subspace N) of cg and apgd: a heavy sphere at rest on a tray, with and without: same
 # height, no overlap beyond tol, at most half the iterations; ranks take the same coefficients
 foreach(_np 1 2 4)
   hardcontact_deck_test(NAME phys_subspace_np${_np} SCRIPT integration/test_phys_subspace.py

@@ -1,18 +1,12 @@
-// Projected Gauss-Seidel on the dual of eq. 15 (one row at a time, exact minimisation along
-// it), made consistent under domain decomposition by a block-Jacobi split:
-// - rows whose two bodies are owned here are swept Gauss-Seidel, each seeing the impulses of
-//   the rows before it;
-// - rows coupling an owned body with a ghost (held by both processes) are updated first in each
-//   sweep, all at once from the velocities of the last exchange, with the Gershgorin step of
-//   their row (dual_operator.h), so both processes compute the same multiplier and apply their
-//   half of the same impulse: momentum stays exact. The simultaneous step is a descent step
-//   because that row sum bounds the row of the dual operator.
-// Each sweep decreases the dual objective; ghost velocities are refreshed after each sweep.
+// Projected Gauss-Seidel on the dual of eq. 15: one row at a time, the exact minimisation
+// along it; each iteration is one sweep of block_sweep.h over the working set, which makes it
+// consistent under domain decomposition (a block-Jacobi split at the process boundary).
 #pragma once
 
 #include "../laws/coulomb.h"
 #include "../laws/normal.h"
 #include "../laws/rolling.h"
+#include "block_sweep.h"
 #include "iterative_solver.h"
 
 namespace hardcontact {

@@ -5,7 +5,6 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <unordered_map>
 
 namespace hardcontact {
 
@@ -21,19 +20,13 @@ void ProjectedCg::start(const SolverSettings &s, std::vector<double> &mu, std::v
 {
   const ContactProblem &p = op_.problem();
   const int nc = p.n_contacts();
-  // The past corrections are per row: they follow the rows by their bodies (carry_past) while
-  // the bodies keep their numbers; a new neighbour list renumbers them, and then they are
-  // dropped on every process (the subspace must have the same dimension everywhere).
+  // The past corrections follow the rows by their bodies (past_corrections.h)
   if (s.subspace > 0) {
-    if (op_.ops().max_all(p.renumbered ? 1.0 : 0.0) > 0.0) {
-      past_.clear();
-      past_aw_.clear();
-    }
-    if (!past_.empty()) carry_past();
+    past_.follow(p, op_.ops());
+    past_.rows_used([&](int c) { set_.include(c); });
     warm_.assign(mu.begin(), mu.begin() + nc);
   } else {
     past_.clear();
-    past_aw_.clear();
   }
   inv_d_.resize(nc);
   double dmax = 0.0;    // over the working set
@@ -69,60 +62,24 @@ void ProjectedCg::grown(const SolverSettings &, std::vector<double> &mu, std::ve
   cg_ = false;
 }
 
-// A pile at rest starts every step a few times tol away from its answer, in its slowest modes
-// (doc/performance.md, section 1.1): the error left by one step returns in the next as
-// 3 r_n - 3 r_(n-1) + r_(n-2), and Jacobi-CG pays for those modes again every step. The last
-// steps' corrections (answer - warm start) span them, so the start is first moved to the
-// minimum of phi over mu + W c, W the past corrections on the set rows:
-//   (W^T A W) c = -W^T g(mu),
-// with A W from the step each correction was made in (finished(): one product; at rest A
-// hardly changes, and the check below catches a stale one). Dependent corrections (the same
-// slow mode again) go with the small eigenvalues of W^T A W. Forces are clipped at 0, and the
-// move is kept only if phi fell: phi(mu1) - phi(mu) = (mu1 - mu).(g + g1) / 2, exact for a
-// quadratic. Every sum is over counted rows and all processes, so every process takes the
+// The start moved to the minimum of phi over mu + W c (past_corrections.h: why), forces
+// clipped at 0; kept only if phi fell: phi(mu1) - phi(mu) = (mu1 - mu).(g + g1) / 2, exact for
+// a quadratic. Every sum is over counted rows and all processes, so every process takes the
 // same c and a row held by two processes the same force.
 void ProjectedCg::subspace_start(std::vector<double> &mu, std::vector<Vec3> &u)
 {
   const ContactProblem &p = op_.problem();
   const std::vector<int> &rows = set_.rows();
-  const int k = static_cast<int>(past_.size());
-  const int nc = p.n_contacts();
-  // E = W^T A W (k x k) and W^T g, one reduction
-  std::vector<double> sums(static_cast<size_t>(k) * k + k, 0.0);
-  for (const int c : rows) {
-    if (!p.counted[c]) continue;
-    for (int a = 0; a < k; ++a) {
-      const double wa = past_[a][c];
-      if (wa == 0.0) continue;
-      for (int b = 0; b < k; ++b) sums[static_cast<size_t>(a) * k + b] += wa * past_aw_[b][c];
-      sums[static_cast<size_t>(k) * k + a] += wa * g_[c];
-    }
-  }
-  op_.ops().sum_all(sums.data(), static_cast<int>(sums.size()));
-  Eigen::MatrixXd E(k, k);
-  Eigen::VectorXd wg(k);
-  for (int a = 0; a < k; ++a) {
-    for (int b = 0; b < k; ++b)
-      E(a, b) = 0.5 * (sums[static_cast<size_t>(a) * k + b] + sums[static_cast<size_t>(b) * k + a]);
-    wg(a) = sums[static_cast<size_t>(k) * k + a];
-  }
-  const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(E);
-  const double top = eig.eigenvalues().maxCoeff();
-  if (!(top > 0.0)) return;
-  Eigen::VectorXd proj = eig.eigenvectors().transpose() * wg;
-  for (int a = 0; a < k; ++a) {
-    const double l = eig.eigenvalues()(a);
-    proj(a) = l > kSubspaceCut * top ? -proj(a) / l : 0.0;
-  }
-  const Eigen::VectorXd coef = eig.eigenvectors() * proj;
+  Eigen::VectorXd coef;
+  if (!past_.coefficients(p, rows, g_, op_.ops(), coef)) return;
   // the trial start, its velocities and gaps; the old ones kept to go back
+  const int nc = p.n_contacts();
   start_g_.resize(nc);
   start_mu_.resize(nc);
   for (const int c : rows) {
     start_g_[c] = g_[c];
     start_mu_[c] = mu[c];
-    double m = mu[c];
-    for (int a = 0; a < k; ++a) m += coef(a) * past_[a][c];
+    const double m = past_.moved(mu[c], coef, c);
     mu[c] = m > 0.0 ? m : 0.0;
   }
   start_u_ = u;
@@ -140,37 +97,6 @@ void ProjectedCg::subspace_start(std::vector<double> &mu, std::vector<Vec3> &u)
   u.swap(start_u_);
 }
 
-// The past corrections onto this solve's rows: the same bodies, the same row (a pair's row
-// is (i, j) or (j, i) as its neighbour list had it; walls are j < 0). Rows new since: 0.
-void ProjectedCg::carry_past()
-{
-  const ContactProblem &p = op_.problem();
-  if (p.body_i == past_i_ && p.body_j == past_j_) return;    // the common case at rest
-  const auto key = [](int i, int j) {
-    return (static_cast<unsigned long long>(static_cast<unsigned>(i)) << 32) |
-           static_cast<unsigned>(j);
-  };
-  std::unordered_map<unsigned long long, int> old;
-  old.reserve(past_i_.size());
-  for (size_t c = 0; c < past_i_.size(); ++c)
-    old.emplace(key(past_i_[c], past_j_[c]), static_cast<int>(c));
-  const int nc = p.n_contacts();
-  std::vector<int> from(nc, -1);
-  for (int c = 0; c < nc; ++c) {
-    const auto it = old.find(key(p.body_i[c], p.body_j[c]));
-    if (it != old.end()) from[c] = it->second;
-  }
-  for (auto *list : {&past_, &past_aw_})
-    for (std::vector<double> &w : *list) {
-      std::vector<double> moved(nc, 0.0);
-      for (int c = 0; c < nc; ++c)
-        if (from[c] >= 0) moved[c] = w[from[c]];
-      w.swap(moved);
-    }
-  past_i_ = p.body_i;
-  past_j_ = p.body_j;
-}
-
 void ProjectedCg::finished(const SolverSettings &s, const std::vector<double> &mu,
                            const std::vector<Vec3> &)
 {
@@ -183,14 +109,7 @@ void ProjectedCg::finished(const SolverSettings &s, const std::vector<double> &m
   const std::vector<int> &rows = set_.rows();
   op_.impulse_velocities_with(rows, [&](int c) { return d[c]; }, w_, &moved_);
   for (const int c : rows) ad[c] = p.h * p.normal_speed(c, w_);
-  if (static_cast<int>(past_.size()) >= s.subspace) {
-    past_.pop_back();
-    past_aw_.pop_back();
-  }
-  past_.insert(past_.begin(), std::move(d));
-  past_aw_.insert(past_aw_.begin(), std::move(ad));
-  past_i_ = p.body_i;
-  past_j_ = p.body_j;
+  past_.record(std::move(d), std::move(ad), p, s.subspace);
 }
 
 double ProjectedCg::set_residual(const std::vector<double> &, const std::vector<Vec3> &)

@@ -24,6 +24,7 @@
 
 #include "../laws/normal.h"
 #include "iterative_solver.h"
+#include "past_corrections.h"
 
 namespace hardcontact {
 
@@ -41,9 +42,9 @@ class ProjectedCg : public IterativeSolver<NormalLaw> {
   {
     return IterativeSolver<NormalLaw>::memory_usage() +
            bytes_of(inv_d_, dir_, q_, w_, moved_, clipped_, clip_, wc_, touched_, near_, qc_,
-                    near_mark_, body_mark_, row_start_, row_list_, past_i_, past_j_, warm_,
-                    start_mu_, start_g_, start_u_) +
-           (past_.empty() ? 0.0 : 2.0 * bytes_of(past_[0]) * static_cast<double>(past_.size()));
+                    near_mark_, body_mark_, row_start_, row_list_, warm_, start_mu_, start_g_,
+                    start_u_) +
+           past_.memory_usage();
   }
 
  private:
@@ -78,8 +79,6 @@ class ProjectedCg : public IterativeSolver<NormalLaw> {
   // The start improved in the span of the past corrections (SolverSettings::subspace): the
   // minimum of phi over mu + W c, kept if phi fell. Needs u = u(mu), g_ on the set rows.
   void subspace_start(std::vector<double> &mu, std::vector<Vec3> &u);
-  // past_ onto this solve's rows (by their bodies; the bodies keep their numbers)
-  void carry_past();
 
   std::vector<double> inv_d_;  // 1 / diag(A) per row (1 for a row no body can move)
   std::vector<double> dir_;    // CG direction in mu's variables (D^-1/2 p, p in x)
@@ -96,15 +95,12 @@ class ProjectedCg : public IterativeSolver<NormalLaw> {
   std::vector<char> near_mark_;
   std::vector<char> body_mark_;          // per owned body: already in touched_
   std::vector<int> row_start_, row_list_;    // rows of body b: row_list_[row_start_[b]..+1)
-  // Past corrections (subspace start, SolverSettings::subspace): newest first, per row of the
-  // rows of the last solve, with their products A w (set rows of the step that made them).
-  std::vector<std::vector<double>> past_, past_aw_;
-  std::vector<int> past_i_, past_j_;    // those rows' bodies
+  // Past corrections (subspace start, SolverSettings::subspace), with their products A w
+  // (set rows of the step that made them)
+  PastCorrections past_{1};
   std::vector<double> warm_;            // the start this solve received
   std::vector<double> start_mu_, start_g_;    // scratch of subspace_start: the way back
   std::vector<Vec3> start_u_;
-  // eigenvalues of W^T A W below this x the largest: directions the corrections repeat
-  static constexpr double kSubspaceCut = 1e-12;
   double sums_[2] = {0.0, 0.0};
   double residual_ = 0.0, gamma_num_ = 0.0, pq_ = 0.0;
   bool cg_ = false;    // dir_ continues a conjugate sequence
