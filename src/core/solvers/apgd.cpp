@@ -95,7 +95,15 @@ void ApgdSolver<Law>::start(const SolverSettings &s, std::vector<double> &mu,
     if constexpr (B > 1) b_[static_cast<size_t>(B) * c] -= this->op_.shift(c);
   }
   gaps(mu, this->g_, u);
-  if (s.subspace > 0 && !past_.empty()) subspace_start(mu, u);
+  // the subspace start, the blocks projected onto the law's set; the shifts stay those of the
+  // warm start (the fixed point moves them, as after any start)
+  if (s.subspace > 0 && !past_.empty())
+    past_.improve_start(
+        this->op_.problem(), this->set_.rows(), this->op_.ops(), mu, this->g_, u,
+        [&](int c, double *m) { Law::project(m, this->coef(c)); },
+        [&](const std::vector<double> &m, std::vector<double> &g, std::vector<Vec3> &v) {
+          gaps(m, g, v);
+        });
   if constexpr (B == 1) {
     // Start L below the Gershgorin bound of the working set: backtracking raises it as needed.
     L_ = s.rho > 0.0 ? 1.0 / s.rho : 0.25 * this->op_.template bound<B>(this->set_.rows());
@@ -107,42 +115,6 @@ void ApgdSolver<Law>::start(const SolverSettings &s, std::vector<double> &mu,
   restart(mu);
   this->rho_ = report_rho();
   residual_ready_ = false;
-}
-
-// As cg's (projected_cg.cpp), with the law's projection of each row's block (the cone with
-// friction) instead of the clip at 0; the shifts stay those of the warm start (the fixed point
-// moves them, as after any start). phi(mu1) - phi(mu) = (mu1 - mu).(g + g1) / 2 with the same
-// linear term. Every sum is over counted rows and all processes: every process takes the same
-// c, and a row held by two processes the same multipliers.
-template <class Law>
-void ApgdSolver<Law>::subspace_start(std::vector<double> &mu, std::vector<Vec3> &u)
-{
-  const ContactProblem &p = this->op_.problem();
-  const std::vector<int> &rows = this->set_.rows();
-  std::vector<double> &g = this->g_;
-  Eigen::VectorXd coef;
-  if (!past_.coefficients(p, rows, g, this->op_.ops(), coef)) return;
-  start_mu_ = mu;
-  start_g_ = g;
-  start_u_ = u;
-  for (const int c : rows) {
-    double *m = &mu[static_cast<size_t>(B) * c];
-    for (int k = 0; k < B; ++k) m[k] = past_.moved(m[k], coef, static_cast<size_t>(B) * c + k);
-    Law::project(m, this->coef(c));
-  }
-  gaps(mu, g, u);
-  double change = 0.0;
-  for (const int c : rows) {
-    if (!p.counted[c]) continue;
-    for (int k = 0; k < B; ++k) {
-      const size_t a = static_cast<size_t>(B) * c + k;
-      change += 0.5 * (mu[a] - start_mu_[a]) * (start_g_[a] + g[a]);
-    }
-  }
-  if (this->op_.ops().sum_all(change) < 0.0) return;
-  mu.swap(start_mu_);    // phi did not fall: the warm start as it came
-  g.swap(start_g_);
-  u.swap(start_u_);
 }
 
 // The correction of this solve and its product A d (gaps of u(d) less the linear term, one
@@ -161,10 +133,10 @@ void ApgdSolver<Law>::finished(const SolverSettings &s, const std::vector<double
       const size_t a = static_cast<size_t>(B) * c + k;
       d[a] = mu[a] - warm_[a];
     }
-  this->op_.template velocities<B>(rows, d, start_u_);
+  this->op_.template velocities<B>(rows, d, scratch_u_);
   for (const int c : rows) {
     double *q = &ad[static_cast<size_t>(B) * c];
-    this->op_.template gap_block<B>(c, start_u_, q);
+    this->op_.template gap_block<B>(c, scratch_u_, q);
     for (int k = 0; k < B; ++k) q[k] -= linear(c, k);
   }
   past_.record(std::move(d), std::move(ad), p, s.subspace);

@@ -27,8 +27,7 @@ class ApgdSolver : public IterativeSolver<Law> {
   double memory_usage() const override
   {
     return IterativeSolver<Law>::memory_usage() +
-           bytes_of(d_, sd_, kd_, b_, y_, gy_, next_, gnext_, warm_, start_mu_, start_g_,
-                    start_u_) +
+           bytes_of(d_, sd_, kd_, b_, y_, gy_, next_, gnext_, warm_, scratch_u_) +
            past_.memory_usage();
   }
 
@@ -38,11 +37,6 @@ class ApgdSolver : public IterativeSolver<Law> {
   // g(m) on the working set, leaving u = u(m)
   void gaps(const std::vector<double> &m, std::vector<double> &g, std::vector<Vec3> &u);
   void restart(const std::vector<double> &mu);
-  // The start improved in the span of the past corrections (SolverSettings::subspace,
-  // past_corrections.h): the minimum of phi over mu + W c, projected onto the law's set, kept
-  // if phi fell. Needs u = u(mu), g_ = g(mu) on the set rows; leaves them so.
-  void subspace_start(std::vector<double> &mu, std::vector<Vec3> &u);
-
   double L_ = 0.0;        // Lipschitz estimate of grad phi (friction: in x = D^1/2 mu)
   // The reported step: 1/L, with friction that of the stiffest component, 1 / (L max D)
   double report_rho() const
@@ -69,11 +63,11 @@ class ApgdSolver : public IterativeSolver<Law> {
   std::vector<double> gy_;      // g at y (g is affine in mu, so no extra product)
   std::vector<double> next_;    // trial point
   std::vector<double> gnext_;
-  // subspace start: the corrections, the start this solve received, the way back from a
-  // trial start (and the scratch of a correction's product)
+  // subspace start: the corrections, the start this solve received (and the scratch of a
+  // correction's product)
   PastCorrections past_{B};
-  std::vector<double> warm_, start_mu_, start_g_;
-  std::vector<Vec3> start_u_;
+  std::vector<double> warm_;
+  std::vector<Vec3> scratch_u_;
 };
 
 using Apgd = ApgdSolver<NormalLaw>;

@@ -64,6 +64,42 @@ class PastCorrections {
   // counted rows, all processes). False if the corrections span nothing (c is then empty).
   bool coefficients(const ContactProblem &p, const std::vector<int> &rows,
                     const std::vector<double> &g, DistributedOps &ops, Eigen::VectorXd &c) const;
+  // The start mu moved to the minimum of phi over mu + W c, each row's block then put back in
+  // the law's set by project(c, m); regap(mu, g, u) makes u = u(mu) and g = grad phi on the
+  // rows. The move is kept only if phi fell: phi(mu1) - phi(mu) = (mu1 - mu).(g + g1) / 2,
+  // exact for a quadratic (the same linear term). Every sum is over counted rows and all
+  // processes, so every process takes the same c and a row two processes hold the same
+  // multipliers. Needs u = u(mu), g = grad phi(mu) on the rows; leaves them so.
+  template <class Project, class Regap>
+  void improve_start(const ContactProblem &p, const std::vector<int> &rows, DistributedOps &ops,
+                     std::vector<double> &mu, std::vector<double> &g, std::vector<Vec3> &u,
+                     Project &&project, Regap &&regap)
+  {
+    Eigen::VectorXd coef;
+    if (!coefficients(p, rows, g, ops, coef)) return;
+    const size_t B = static_cast<size_t>(block_);
+    start_mu_ = mu;    // the way back
+    start_g_ = g;
+    start_u_ = u;
+    for (const int c : rows) {
+      double *m = &mu[B * c];
+      for (size_t k = 0; k < B; ++k) m[k] = moved(m[k], coef, B * c + k);
+      project(c, m);
+    }
+    regap(mu, g, u);
+    double change = 0.0;
+    for (const int c : rows) {
+      if (!p.counted[c]) continue;
+      for (size_t k = 0; k < B; ++k) {
+        const size_t a = B * c + k;
+        change += 0.5 * (mu[a] - start_mu_[a]) * (start_g_[a] + g[a]);
+      }
+    }
+    if (ops.sum_all(change) < 0.0) return;
+    mu.swap(start_mu_);    // phi did not fall: the start as it came
+    g.swap(start_g_);
+    u.swap(start_u_);
+  }
   // m + (W c) at multiplier a (= block x row + component)
   double moved(double m, const Eigen::VectorXd &c, size_t a) const
   {
@@ -72,7 +108,7 @@ class PastCorrections {
   }
   double memory_usage() const
   {
-    return bytes_of(bodies_i_, bodies_j_) +
+    return bytes_of(bodies_i_, bodies_j_, start_mu_, start_g_, start_u_) +
            (w_.empty() ? 0.0 : 2.0 * bytes_of(w_[0]) * static_cast<double>(w_.size()));
   }
 
@@ -82,6 +118,8 @@ class PastCorrections {
   int block_;
   std::vector<std::vector<double>> w_, aw_;    // newest first
   std::vector<int> bodies_i_, bodies_j_;       // the rows they are stored on
+  std::vector<double> start_mu_, start_g_;     // improve_start's scratch
+  std::vector<Vec3> start_u_;
 };
 
 }    // namespace hardcontact

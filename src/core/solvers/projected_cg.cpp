@@ -40,10 +40,18 @@ void ProjectedCg::start(const SolverSettings &s, std::vector<double> &mu, std::v
   body_mark_.assign(p.n_owned, 0);
   wc_.assign(p.n_dof(), Vec3::Zero());
   w_.assign(p.n_dof(), Vec3::Zero());    // products clear only the bodies of set rows (moved_)
-  op_.velocities<1>(set_.rows(), mu, u);
-  for (const int c : set_.rows()) g_[c] = op_.gap(c, u);
+  // u = u(m) and the gaps g on the set rows
+  const auto regap = [&](const std::vector<double> &m, std::vector<double> &g,
+                         std::vector<Vec3> &v) {
+    op_.velocities<1>(set_.rows(), m, v);
+    for (const int c : set_.rows()) g[c] = op_.gap(c, v);
+  };
+  regap(mu, g_, u);
   index_rows();
-  if (s.subspace > 0 && !past_.empty()) subspace_start(mu, u);
+  // the subspace start (past_corrections.h), forces clipped at 0
+  if (s.subspace > 0 && !past_.empty())
+    past_.improve_start(p, set_.rows(), op_.ops(), mu, g_, u,
+                        [](int, double *m) { m[0] = m[0] > 0.0 ? m[0] : 0.0; }, regap);
   refresh(mu);
   cg_ = false;
   // reported step (f_ID[8]): the preconditioner's step on its stiffest row, 1 / max diag(A)
@@ -60,41 +68,6 @@ void ProjectedCg::grown(const SolverSettings &, std::vector<double> &mu, std::ve
   index_rows();
   refresh(mu);
   cg_ = false;
-}
-
-// The start moved to the minimum of phi over mu + W c (past_corrections.h: why), forces
-// clipped at 0; kept only if phi fell: phi(mu1) - phi(mu) = (mu1 - mu).(g + g1) / 2, exact for
-// a quadratic. Every sum is over counted rows and all processes, so every process takes the
-// same c and a row held by two processes the same force.
-void ProjectedCg::subspace_start(std::vector<double> &mu, std::vector<Vec3> &u)
-{
-  const ContactProblem &p = op_.problem();
-  const std::vector<int> &rows = set_.rows();
-  Eigen::VectorXd coef;
-  if (!past_.coefficients(p, rows, g_, op_.ops(), coef)) return;
-  // the trial start, its velocities and gaps; the old ones kept to go back
-  const int nc = p.n_contacts();
-  start_g_.resize(nc);
-  start_mu_.resize(nc);
-  for (const int c : rows) {
-    start_g_[c] = g_[c];
-    start_mu_[c] = mu[c];
-    const double m = past_.moved(mu[c], coef, c);
-    mu[c] = m > 0.0 ? m : 0.0;
-  }
-  start_u_ = u;
-  op_.velocities<1>(rows, mu, u);
-  double change = 0.0;
-  for (const int c : rows) {
-    g_[c] = op_.gap(c, u);
-    if (p.counted[c]) change += 0.5 * (mu[c] - start_mu_[c]) * (start_g_[c] + g_[c]);
-  }
-  if (op_.ops().sum_all(change) < 0.0) return;
-  for (const int c : rows) {    // phi did not fall: the warm start as it came
-    mu[c] = start_mu_[c];
-    g_[c] = start_g_[c];
-  }
-  u.swap(start_u_);
 }
 
 void ProjectedCg::finished(const SolverSettings &s, const std::vector<double> &mu,

@@ -42,8 +42,7 @@ class ProjectedCg : public IterativeSolver<NormalLaw> {
   {
     return IterativeSolver<NormalLaw>::memory_usage() +
            bytes_of(inv_d_, dir_, q_, w_, moved_, clipped_, clip_, wc_, touched_, near_, qc_,
-                    near_mark_, body_mark_, row_start_, row_list_, warm_, start_mu_, start_g_,
-                    start_u_) +
+                    near_mark_, body_mark_, row_start_, row_list_, warm_) +
            past_.memory_usage();
   }
 
@@ -76,9 +75,6 @@ class ProjectedCg : public IterativeSolver<NormalLaw> {
   void refresh_with(const std::vector<double> &mu, Update &&update);
   // Rows per body over the working set (CSR), for the sparse correction; moved_ from it.
   void index_rows();
-  // The start improved in the span of the past corrections (SolverSettings::subspace): the
-  // minimum of phi over mu + W c, kept if phi fell. Needs u = u(mu), g_ on the set rows.
-  void subspace_start(std::vector<double> &mu, std::vector<Vec3> &u);
 
   std::vector<double> inv_d_;  // 1 / diag(A) per row (1 for a row no body can move)
   std::vector<double> dir_;    // CG direction in mu's variables (D^-1/2 p, p in x)
@@ -99,8 +95,6 @@ class ProjectedCg : public IterativeSolver<NormalLaw> {
   // (set rows of the step that made them)
   PastCorrections past_{1};
   std::vector<double> warm_;            // the start this solve received
-  std::vector<double> start_mu_, start_g_;    // scratch of subspace_start: the way back
-  std::vector<Vec3> start_u_;
   double sums_[2] = {0.0, 0.0};
   double residual_ = 0.0, gamma_num_ = 0.0, pq_ = 0.0;
   bool cg_ = false;    // dir_ continues a conjugate sequence
