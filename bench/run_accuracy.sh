@@ -12,6 +12,9 @@
 # that launcher was built from, for the report; default: this tree's commit), SOFT_LMP (default /usr/bin/lmp),
 # BENCH_WORKDIR (scratch, default bench/work: data files, logs, dumps; not committed),
 # BENCH_WAIT_LOAD=N: wait up to N seconds for the 1-minute load average to drop below 1.
+# ACCURACY_ONLY=<scenes> (comma-separated, e.g. pile3d): run those scenes only; the other
+# scenes' rows stay in the CSV files, the run is described in machine_<scenes>.json and the
+# report names it beside the full run.
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh" "" "$@"
 
@@ -25,7 +28,15 @@ fi
 
 T0=$SECONDS
 LOAD_BEFORE="$(cut -d' ' -f1-3 /proc/loadavg)"
-"$PY" "$ROOT/bench/accuracy/run.py" "${QUICK[@]}" --lmp "$LMP" --soft-lmp "$SOFT_LMP" \
+ONLY=()
+MACHINE="$RESULTS/machine.json"
+if [ -n "${ACCURACY_ONLY:-}" ]; then
+  ONLY=(--only "$ACCURACY_ONLY")
+  MACHINE="$RESULTS/machine_${ACCURACY_ONLY//,/_}.json"
+else
+  rm -f "$RESULTS"/machine_*.json    # every scene is run again: no part of an older run is left
+fi
+"$PY" "$ROOT/bench/accuracy/run.py" "${QUICK[@]}" "${ONLY[@]}" --lmp "$LMP" --soft-lmp "$SOFT_LMP" \
   --work "$WORK" --results "$RESULTS"
 LOAD_AFTER="$(cut -d' ' -f1-3 /proc/loadavg)"
 
@@ -39,14 +50,14 @@ if [ -z "$GIT" ]; then
     GIT="$GIT + uncommitted changes in src/ or cmake/"
   fi
 fi
-"$PY" - "$RESULTS/machine.json" <<PYEOF
+"$PY" - "$MACHINE" <<PYEOF
 import json, os, sys, time
 cpu = "?"
 for line in open("/proc/cpuinfo"):
     if line.startswith("model name"):
         cpu = line.split(":", 1)[1].strip()
         break
-json.dump(dict(mode="$MODE", date=time.strftime("%Y-%m-%d %H:%M %Z"), nproc=os.cpu_count(), cpu=cpu,
+json.dump(dict(mode="$MODE", only="${ACCURACY_ONLY:-}", date=time.strftime("%Y-%m-%d %H:%M %Z"), nproc=os.cpu_count(), cpu=cpu,
                load_before="$LOAD_BEFORE", load_after="$LOAD_AFTER", lammps="$LAMMPS_VERSION",
                git="$GIT", launcher="$LMP", minutes=($SECONDS - $T0) / 60.0),
           open(sys.argv[1], "w"), indent=1)

@@ -1,12 +1,23 @@
 """LAMMPS input decks of the benchmark (hardcontact and the soft-sphere twin)."""
 
 HEAD_DATA = """units           si
-dimension       2
+dimension       {dim}
 atom_style      sphere
-boundary        f f p
+boundary        f f {zb}
 atom_modify     map array
 read_data       {data}
 """
+
+
+def dim_of(scene):
+    return scene.get("dim", 2)
+
+
+def head_data(scene, data):
+    """The start of a deck that reads a data file: 2d scenes are periodic in z (LAMMPS needs
+    it for dimension 2), pile3d has walls there."""
+    d = dim_of(scene)
+    return HEAD_DATA.format(dim=d, zb="p" if d == 2 else "f", data=data)
 
 HEAD_RESTART = """units           si
 read_restart    {restart}
@@ -16,12 +27,16 @@ HARD_FIXES = """pair_style      none
 neighbor        {skin!r} bin
 neigh_modify    delay 0 every 1 check {check}
 {gravity}fix             hc all hardcontact {walls} solver {solver} tol {tol!r} warmstart {warm} maxiter {maxiter}
-fix             e2d all enforce2d
-timestep        {h!r}
+{e2d}timestep        {h!r}
 """
+E2D = "fix             e2d all enforce2d\n"
+
+
+def hard_fixes(scene, **kw):
+    return HARD_FIXES.format(e2d=E2D if dim_of(scene) == 2 else "", **kw)
 
 DIAG = """compute         ke all ke
-variable        sp atom sqrt(vx*vx+vy*vy)
+variable        sp atom sqrt(vx*vx+vy*vy+vz*vz)
 compute         vmax all reduce max v_sp
 thermo_style    custom step time c_ke c_vmax f_hc[1] f_hc[2] f_hc[3] f_hc[4] f_hc[5] f_hc[6] f_hc[7] f_hc[9]
 thermo_modify   norm no format float %.12g
@@ -39,8 +54,8 @@ def hard(scene, start, solver, tol, warm, lead, window, cap, maxiter=10000, chec
     step), both stopped by fix halt after `cap` seconds. start: ('data', file) or
     ('restart', file)."""
     kind, f = start
-    text = (HEAD_DATA.format(data=f) if kind == "data" else HEAD_RESTART.format(restart=f))
-    text += HARD_FIXES.format(skin=skin or scene["skin"], check=check,
+    text = (head_data(scene, f) if kind == "data" else HEAD_RESTART.format(restart=f))
+    text += hard_fixes(scene, skin=skin or scene["skin"], check=check,
                               gravity=gravity_line(scene["gravity"]), walls=scene["walls"],
                               solver=solver, tol=tol, warm=warm, maxiter=maxiter,
                               h=h or scene["h"])
@@ -52,7 +67,7 @@ def hard(scene, start, solver, tol, warm, lead, window, cap, maxiter=10000, chec
         text += "thermo          %d\nrun             %d\nunfix           halt\ntimer           timeout off\n" % (lead, lead)
     text += halt % float(cap)
     if gapdump_every:
-        text += ("dump            ga all custom %d gap.dump id radius x y vx vy\n"
+        text += ("dump            ga all custom %d gap.dump id radius x y z vx vy vz\n"
                  "dump_modify     ga sort id format float %%.17g\n"
                  "dump            gl all local %d gap.local f_hc[1] f_hc[2] f_hc[3] f_hc[7]\n"
                  "dump_modify     gl format float %%.17g\n" % (gapdump_every, gapdump_every))
@@ -77,11 +92,11 @@ def hard(scene, start, solver, tol, warm, lead, window, cap, maxiter=10000, chec
 def probe(scene, restart, solver, tol, warm, maxiter=10000, check="yes"):
     """One step from the probe state; velocities dumped before and after."""
     text = HEAD_RESTART.format(restart=restart)
-    text += HARD_FIXES.format(skin=scene["skin"], check=check, gravity=gravity_line(scene["gravity"]),
+    text += hard_fixes(scene, skin=scene["skin"], check=check, gravity=gravity_line(scene["gravity"]),
                               walls=scene["walls"], solver=solver, tol=tol, warm=warm,
                               maxiter=maxiter, h=scene["h"])
     text += DIAG
-    text += ("dump            pv all custom 1 probe.dump id vx vy\n"
+    text += ("dump            pv all custom 1 probe.dump id vx vy vz\n"
              "dump_modify     pv sort id format float %.17g\n"
              "thermo          1\nrun             1\n")
     return text
@@ -93,7 +108,7 @@ def settle(scene, data, n_fall, h_fall, skin_fall, tol_fall, n_relax, tol_relax,
     under a viscous drag (an external force like gravity: frictionless grains creep for a long
     time otherwise), then hold without drag at tol_hold; writes start.restart / start.data /
     start.local."""
-    text = HEAD_DATA.format(data=data)
+    text = head_data(scene, data)
     grav = gravity_line(scene["gravity"])
     defined = False
 
@@ -101,8 +116,9 @@ def settle(scene, data, n_fall, h_fall, skin_fall, tol_fall, n_relax, tol_relax,
         nonlocal defined
         t = ""
         if defined:
-            t += "unfix           hc\nunfix           e2d\n" + ("unfix           grav\n" if grav else "")
-        t += HARD_FIXES.format(skin=skin, check="yes", gravity=grav, walls=scene["walls"],
+            t += "unfix           hc\n" + ("unfix           e2d\n" if dim_of(scene) == 2 else "")
+            t += "unfix           grav\n" if grav else ""
+        t += hard_fixes(scene, skin=skin, check="yes", gravity=grav, walls=scene["walls"],
                                solver="apgd", tol=tol, warm="yes", maxiter=10000, h=h)
         if not defined:
             t += DIAG
@@ -122,9 +138,9 @@ def settle(scene, data, n_fall, h_fall, skin_fall, tol_fall, n_relax, tol_relax,
 
 
 SOFT = """units           si
-dimension       2
+dimension       {dim}
 atom_style      sphere
-boundary        f f p
+boundary        f f {zb}
 atom_modify     map array
 comm_modify     vel yes
 read_data       {data}
@@ -137,8 +153,7 @@ fix             grav all gravity {g!r} vector 0 -1 0
 fix             nve all nve/sphere
 fix             wx all wall/gran hertz/history {kn!r} NULL {gn!r} NULL 0.0 1 xplane 0.0 {width!r}
 fix             wy all wall/gran hertz/history {kn!r} NULL {gn!r} NULL 0.0 1 yplane 0.0 NULL
-fix             e2d all enforce2d
-timestep        {dt!r}
+{third}timestep        {dt!r}
 compute         pl all pair/local force dist cutoff radius
 compute         pp all property/local patom1 patom2 cutoff radius
 compute         red all reduce max c_pl[1] c_pl[2] c_pp[1] c_pp[2] replace 2 1 replace 3 1 replace 4 1
@@ -146,7 +161,7 @@ compute         rad all property/atom radius
 variable        wb atom (y-c_rad)/c_rad
 variable        wl atom (x-c_rad)/c_rad
 variable        wr atom ({width!r}-x-c_rad)/c_rad
-compute         wmin all reduce min v_wb v_wl v_wr
+{zgaps}compute         wmin all reduce min v_wb v_wl v_wr{zmin}
 thermo_style    custom step time c_red[1] c_wmin[1]
 thermo_modify   norm no
 fix             halt all halt 100 tlimit > {cap!r} error soft message no
@@ -159,17 +174,30 @@ def soft(scene, data, kn, gn, dt, n_settle, viscous, n_window, track_every, dump
     fix viscous, then the measured window. Overlap tracking: every track_every steps, the pair
     carrying the largest force (ids and distance) and the smallest wall gaps (track.txt); every
     dump_every steps all positions (soft.dump)."""
+    width = scene["box"][0][1]
+    if dim_of(scene) == 2:
+        third, zgaps, zmin = E2D, "", ""
+    else:    # the walls in z, and their gaps (the box is width_d square)
+        depth = scene["box"][2][1]
+        third = ("fix             wz all wall/gran hertz/history %r NULL %r NULL 0.0 1 zplane 0.0 %r\n"
+                 % (kn, gn, depth))
+        zgaps = ("variable        wf atom (z-c_rad)/c_rad\n"
+                 "variable        wk atom (%r-z-c_rad)/c_rad\n" % depth)
+        zmin = " v_wf v_wk"
     text = SOFT.format(data=data, zero="" if zero_velocity else "", kn=kn, gn=gn,
                        skin=0.2 * scene["diameter"].mean(), g=scene["gravity"],
-                       width=scene["box"][0][1], dt=dt, cap=float(cap))
+                       width=width, dt=dt, cap=float(cap), dim=dim_of(scene),
+                       zb="p" if dim_of(scene) == 2 else "f", third=third, zgaps=zgaps, zmin=zmin)
+    nwall = 3 if dim_of(scene) == 2 else 5
     if not zero_velocity:
         text = text.replace("velocity        all set 0.0 0.0 0.0 \n", "")
     if n_settle:
         text += "fix             visc all viscous %r\nthermo          %d\nrun             %d\nunfix           visc\n" % (
             viscous, max(n_settle // 4, 1), n_settle)
     text += ("fix             trk all ave/time 1 1 %d c_red[1] c_red[2] c_red[3] c_red[4] "
-             "c_wmin[1] c_wmin[2] c_wmin[3] file track.txt format \" %%.12g\"\n" % track_every)
-    text += ("dump            sd all custom %d soft.dump id radius x y\n"
+             "%s file track.txt format \" %%.12g\"\n" % (
+                 track_every, " ".join("c_wmin[%d]" % (k + 1) for k in range(nwall))))
+    text += ("dump            sd all custom %d soft.dump id radius x y z\n"
              "dump_modify     sd sort id format float %%.17g\n" % dump_every)
     text += "thermo          %d\nrun             %d\n" % (max(n_window // 10, 1), n_window)
     return text
@@ -179,7 +207,7 @@ def slide(scene, solver="apgd", tol=1e-10, nsteps=200):
     """Disc 2 orbits the fixed disc 1 under a central pull; the gap of the contact after every
     step is printed (thermo)."""
     a = scene["accel"]
-    text = HEAD_DATA.format(data="slide.data")
+    text = head_data(scene, "slide.data")
     text += """group           mover id 2
 pair_style      none
 neighbor        %r bin

@@ -25,8 +25,9 @@ def T(key):
     return key + CPU[0]
 COLOR = {"cg": "tab:red", "apgd": "tab:blue", "pgs": "tab:green", "uzawa": "tab:orange"}
 MARK = {"cg": "D", "apgd": "o", "pgs": "s", "uzawa": "^"}
-ORDER = ["pile10", "pile30", "pile100", "crystal", "cluster", "pour"]
+ORDER = ["pile10", "pile30", "pile100", "pile3d", "crystal", "cluster", "pour"]
 TITLE = {"pile10": "pile, 10 layers", "pile30": "pile, 30 layers", "pile100": "pile, 100 layers",
+         "pile3d": "3D pile, 10 layers",
          "crystal": "hexagonal crystal", "cluster": "cluster impact (6.3)", "pour": "pour into a box"}
 
 
@@ -185,11 +186,16 @@ def fig_velocity(matrix, scenes, out):
     return True
 
 
+def is_2d_pile(scene):
+    """pile10, pile30, pile100 (the height series); pile3d is not one of them."""
+    return scene.startswith("pile") and scene[4:].isdigit()
+
+
 def iteration_table(matrix, tol):
-    """{(solver, warm): [(layers, mean iterations, hit fraction)]} for the piles."""
+    """{(solver, warm): [(layers, mean iterations, hit fraction)]} for the 2d piles."""
     out = {}
     for r in matrix:
-        if not r["scene"].startswith("pile") or r["tol"] != tol or not ok(r):
+        if not is_2d_pile(r["scene"]) or r["tol"] != tol or not ok(r):
             continue
         L = float(r["scene"][4:])
         out.setdefault((r["solver"], r["warmstart"]), []).append(
@@ -323,13 +329,24 @@ def build_doc(res, figdir_rel, meta, matrix, soft, scenes, slide, figs):
           meta.get("load_after", "?"), meta.get("lammps", "?"), meta.get("git", "?"),
           fmt(meta.get("minutes"), "%.0f")))
     w("")
+    for part in meta.get("parts", []):
+        w("Scene%s %s %s run on %s own (`ACCURACY_ONLY=%s bench/run_accuracy.sh`) on %s: %s, "
+          "load %s before and %s after, hardcontact %s, %s min; its rows replaced that scene's "
+          "rows of the run above (ratios within a scene come from one run; times of different "
+          "runs compare only where the processor is the same)." % (
+              "s" if "," in part["only"] else "", part["only"], "were" if "," in part["only"] else "was",
+              "their" if "," in part["only"] else "its", part["only"], part.get("date", "?"),
+              part.get("cpu", "?"), part.get("load_before", "?"), part.get("load_after", "?"),
+              part.get("git", "?"), fmt(part.get("minutes"), "%.0f")))
+        w("")
     # ---------------------------------------------------------------- summary (filled later)
     summary_at = len(L)
     w("")
     w("## What was measured")
     w("")
-    w("Scenes (2d discs, `units si`, grains of about 1 mm, density 2500 kg/m^3, g = 9.81 m/s^2, "
-      "all data files written by `bench/accuracy/scenes.py` from fixed seeds):")
+    w("Scenes (2d discs, and spheres in the 3D pile; `units si`, grains of about 1 mm, density "
+      "2500 kg/m^3, g = 9.81 m/s^2 along -y; all data files written by "
+      "`bench/accuracy/scenes.py` from fixed seeds):")
     w("")
     w("| scene | what | h (s) | start of every run | window (steps) | probe state | exact solve of the probe step |")
     w("|---|---|---|---|---|---|---|")
@@ -447,7 +464,7 @@ def build_doc(res, figdir_rel, meta, matrix, soft, scenes, slide, figs):
     # ---------------------------------------------------------------- iterations vs height
     w("## Iterations against pile height")
     w("")
-    piles = [s for s in present if s.startswith("pile")]
+    piles = [s for s in present if is_2d_pile(s)]
     if len(piles) >= 2:
         w("Mean iterations per step in the held piles (h = 1 ms), and the exponent of a power "
           "law fitted through them (runs that stopped at maxiter are left out of the fit):")
@@ -670,7 +687,10 @@ def main():
     soft = read(res / "soft.csv")
     slide = read(res / "slide.csv")
     scenes = {r["scene"]: r for r in read(res / "scenes.csv")}
+    if isinstance(scenes.get("pile3d", {}).get("layers"), float):
+        TITLE["pile3d"] = "3D pile, %d layers" % scenes["pile3d"]["layers"]
     meta = json.loads((res / "machine.json").read_text()) if (res / "machine.json").exists() else {}
+    meta["parts"] = [json.loads(f.read_text()) for f in sorted(res.glob("machine_*.json"))]
     try:
         load = float(str(meta.get("load_before", "0")).split()[0])
     except ValueError:

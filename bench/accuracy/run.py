@@ -37,6 +37,7 @@ def config(quick):
             scenes=[
                 dict(make=lambda: scenes.pile(10), settle=(300, 100, 10), lead=5, window=20),
                 dict(make=lambda: scenes.pile(30), settle=(400, 150, 10), lead=5, window=20),
+                dict(make=lambda: scenes.pile3d(4, 6), settle=(300, 100, 10), lead=5, window=20),
                 dict(make=lambda: scenes.crystal(16, 16), settle=(0, 0, 10), lead=5, window=20),
                 dict(make=lambda: scenes.cluster(0.25), probe=3, lead=0, window=12),
                 dict(make=lambda: scenes.pour(150, width_d=12), probe=110, lead=0, window=200),
@@ -50,6 +51,7 @@ def config(quick):
             dict(make=lambda: scenes.pile(10), settle=(460, 150, 20), lead=10, window=100),
             dict(make=lambda: scenes.pile(30), settle=(580, 200, 20), lead=10, window=80),
             dict(make=lambda: scenes.pile(100), settle=(1000, 300, 20), lead=10, window=40),
+            dict(make=lambda: scenes.pile3d(10), settle=(700, 300, 20), lead=10, window=60),
             dict(make=lambda: scenes.crystal(30, 30), settle=(0, 0, 20), lead=10, window=60),
             dict(make=lambda: scenes.cluster(0.4), probe=3, lead=0, window=12),
             dict(make=lambda: scenes.pour(400), probe=170, lead=0, window=300),
@@ -79,7 +81,8 @@ class Runner:
         self.results.mkdir(parents=True, exist_ok=True)
         self.lmp_hard = args.lmp
         self.lmp_soft = args.soft_lmp
-        self.log = open(str(self.results / "run_log.txt"), "w")
+        only = "_".join(filter(None, args.only.split(",")))
+        self.log = open(str(self.results / ("run_log_%s.txt" % only if only else "run_log.txt")), "w")
 
     def say(self, msg):
         line = "[%s] %s" % (time.strftime("%H:%M:%S"), msg)
@@ -128,18 +131,29 @@ def radii_of(frame):
     return frame["radius"]
 
 
+def coords(frame):
+    """Positions of a dumped frame: x, y and, when dumped, z (0 in the 2d scenes)."""
+    cols = [frame["x"], frame["y"]] + ([frame["z"]] if "z" in frame else [])
+    return np.column_stack(cols)
+
+
+def velocities(frame):
+    cols = [frame["vx"], frame["vy"]] + ([frame["vz"]] if "vz" in frame else [])
+    return np.column_stack(cols)
+
+
 def pair_gaps(frame_atoms, frame_local):
     """Relative gaps D/(r_i + r_j) of the active pair contacts (force > 0) of one step."""
     ids = frame_atoms["id"].astype(int)
     index = np.full(ids.max() + 1, -1)
     index[ids] = np.arange(len(ids))
-    x, y, r = frame_atoms["x"], frame_atoms["y"], frame_atoms["radius"]
+    x, r = coords(frame_atoms), frame_atoms["radius"]
     i = frame_local["f_hc[1]"].astype(int)
     j = frame_local["f_hc[2]"].astype(int)
     f = frame_local["f_hc[3]"]
     keep = (j > 0) & (f > 0)
     a, b = index[i[keep]], index[j[keep]]
-    d = np.hypot(x[b] - x[a], y[b] - y[a])
+    d = np.linalg.norm(x[b] - x[a], axis=1)
     size = r[a] + r[b]
     return (d - size) / size
 
@@ -147,14 +161,14 @@ def pair_gaps(frame_atoms, frame_local):
 def all_overlaps(frame, wall_list):
     """Largest relative overlap over all pairs (D/(r_i+r_j)) and walls (D/r_i) of a frame."""
     from scipy.spatial import cKDTree
-    x = np.column_stack([frame["x"], frame["y"]])
+    x = coords(frame)
     r = frame["radius"]
     worst = 0.0
     pairs = cKDTree(x).query_pairs(2.0 * r.max(), output_type="ndarray")
     if len(pairs):
         a, b = pairs[:, 0], pairs[:, 1]
         s = r[a] + r[b]
-        ov = (s - np.hypot(*(x[b] - x[a]).T)) / s
+        ov = (s - np.linalg.norm(x[b] - x[a], axis=1)) / s
         worst = max(worst, float(ov.max()))
     for dim, coord, side in wall_list:
         gap = side * (x[:, dim] - coord) - r
@@ -180,6 +194,14 @@ def main():
     R.work.mkdir(parents=True, exist_ok=True)
     only = set(filter(None, args.only.split(",")))
 
+    # --only: the rows of the other scenes stay in the CSV files (a scene rerun or added on its
+    # own; the report names the runs, machine_<scenes>.json)
+    kept = {}
+    for f in ("matrix.csv", "scenes.csv", "soft.csv"):
+        kept[f] = []
+        if only and (R.results / f).exists():
+            with open(str(R.results / f)) as fh:
+                kept[f] = [r for r in csv.DictReader(fh) if r.get("scene") not in only]
     matrix_rows, probe_rows, soft_rows, scene_rows = [], [], [], []
     t_start = time.time()
     for spec in cfg["scenes"]:
@@ -196,7 +218,7 @@ def main():
         lf = load_factor()
         cap = cfg["cap"] * lf
         R.say("scene %s: %d discs, h = %g s (time cap per run %.0f s, load factor %.2f)" % (name, n, sc["h"], cap, lf))
-        info = dict(scene=name, load_factor=lf, discs=n, h=sc["h"], layers=sc["layers"] or "", gravity=sc["gravity"],
+        info = dict(scene=name, dim=sc.get("dim", 2), load_factor=lf, discs=n, h=sc["h"], layers=sc["layers"] or "", gravity=sc["gravity"],
                     window=spec["window"], lead=spec["lead"], desc=sc.get("desc", ""))
 
         # ---- start state (window start) and probe state (velocity error against exact)
@@ -232,8 +254,8 @@ def main():
             deck = decks.probe(sc, probe_restart, "exact", 1e-10, "no", check=check, maxiter=1000000)
             text, secs, cpu = R.lammps(R.lmp_hard, deck, wd / "exact", timeout=cfg["exact_cap"])
             fr = lmp.read_dump(wd / "exact" / "probe.dump")
-            v0 = np.column_stack([fr[0][1]["vx"], fr[0][1]["vy"]])
-            exact_v = np.column_stack([fr[-1][1]["vx"], fr[-1][1]["vy"]])
+            v0 = velocities(fr[0][1])
+            exact_v = velocities(fr[-1][1])
             m = scenes.mass(sc)  # noqa: F841 (documentation: gravity is the only force)
             ufree = v0.copy()
             ufree[:, 1] -= sc["gravity"] * sc["h"]
@@ -303,7 +325,7 @@ def main():
                                 ptext, psecs, pcpu = R.lammps(R.lmp_hard, deck, wd / tag / "probe",
                                                               timeout=2 * cap + 120)
                                 fr = lmp.read_dump(wd / tag / "probe" / "probe.dump")
-                                v = np.column_stack([fr[-1][1]["vx"], fr[-1][1]["vy"]])
+                                v = velocities(fr[-1][1])
                                 err = np.linalg.norm(v - exact_v, axis=1)
                                 pth = lmp.thermo_blocks(ptext)[-1]
                                 row.update(vel_err=float(err.max()) / info["vscale"],
@@ -317,17 +339,17 @@ def main():
                         R.say("  %-22s %-8s steps %3d  it %8.1f  ov %.2e  verr %.2e  %.4f s/step  hits %d" % (
                             tag, row["status"][:8], st["steps"], st["iter_mean"], st["overlap_rel_max"],
                             row.get("vel_err", float("nan")), st["t_step"], st["maxiter_hits"]))
-                write_csv(R.results / "matrix.csv", matrix_rows)
+                write_csv(R.results / "matrix.csv", kept["matrix.csv"] + matrix_rows)
         scene_rows.append(info)
-        write_csv(R.results / "scenes.csv", scene_rows)
+        write_csv(R.results / "scenes.csv", kept["scenes.csv"] + scene_rows)
 
         # ---- soft-sphere twin
         if not args.skip_soft and name.startswith("pile"):
             soft_rows += soft_pile(R, sc, spec, wd, matrix_rows)
-            write_csv(R.results / "soft.csv", soft_rows)
+            write_csv(R.results / "soft.csv", kept["soft.csv"] + soft_rows)
         if not args.skip_soft and name == "pour":
             soft_rows += soft_pour(R, sc, spec, wd, matrix_rows, info)
-            write_csv(R.results / "soft.csv", soft_rows)
+            write_csv(R.results / "soft.csv", kept["soft.csv"] + soft_rows)
         R.say("  elapsed %.0f s" % (time.time() - t_start))
 
     if not only or "slide" in only:
@@ -360,7 +382,7 @@ def soft_overlap(wd, sc, ids_radius):
             dist, i, j = tr[ok, 2], tr[ok, 3].astype(int), tr[ok, 4].astype(int)
             s = ids_radius[i] + ids_radius[j]
             worst = max(worst, float(((s - dist) / s).max()))
-        worst = max(worst, float(-tr[:, 5:8].min()))
+        worst = max(worst, float(-tr[:, 5:].min()))    # the walls' smallest gaps
     return worst
 
 

@@ -2,12 +2,15 @@
 (atom_style sphere, full double precision) from fixed numpy seeds.
 
 Units are SI (LAMMPS `units si`): grains of about 1 mm, glass density 2500 kg/m^3, g = 9.81.
-Every scene is 2d (discs in the x-y plane, `dimension 2`, `fix enforce2d`); masses are those
-LAMMPS gives a sphere of that diameter and density (read_data), as in the paper's 6.3.
+Every scene but pile3d is 2d (discs in the x-y plane, `dimension 2`, `fix enforce2d`); pile3d
+is a 3D pile of spheres (`dimension 3`, gravity along -y as in the 2d scenes, the floor a
+y plane and walls in x and z). Masses are those LAMMPS gives a sphere of that diameter and
+density (read_data), as in the paper's 6.3.
 
 A scene is a dict: name, data (file name), box, walls (hardcontact `wall` keywords), walls
 list for Python checks [(dim, coord, +1 lo / -1 hi)], h (step of hardcontact), skin,
-gravity (m/s^2 along -y, 0 for none), and the arrays pos, vel, diameter, density.
+gravity (m/s^2 along -y, 0 for none), dim (2 or 3; 2 when absent), and the arrays pos, vel,
+diameter, density.
 """
 
 import math
@@ -28,11 +31,13 @@ def write_data(path, sc, title="hardcontact accuracy benchmark scene"):
         lines.append("%s %s %slo %shi" % (r(float(lo)), r(float(hi)), nm, nm))
     lines += ["", "Atoms # sphere", ""]
     for i in range(n):
-        lines.append("%d 1 %s %s %s %s 0.0" % (i + 1, r(float(dia[i])), r(float(rho[i])),
-                                               r(float(pos[i, 0])), r(float(pos[i, 1]))))
+        lines.append("%d 1 %s %s %s %s %s" % (i + 1, r(float(dia[i])), r(float(rho[i])),
+                                              r(float(pos[i, 0])), r(float(pos[i, 1])),
+                                              r(float(pos[i, 2]))))
     lines += ["", "Velocities", ""]
     for i in range(n):
-        lines.append("%d %s %s 0.0 0 0 0" % (i + 1, r(float(vel[i, 0])), r(float(vel[i, 1]))))
+        lines.append("%d %s %s %s 0 0 0" % (i + 1, r(float(vel[i, 0])), r(float(vel[i, 1])),
+                                            r(float(vel[i, 2]))))
     with open(str(path), "w") as f:
         f.write("\n".join(lines) + "\n")
 
@@ -67,6 +72,37 @@ def pile(layers, width_d=20, seed=1):
     return dict(name="pile%d" % layers, desc=desc, pos=pos, vel=np.zeros((n, 3)), diameter=dia,
                 density=np.full(n, RHO), box=box, walls=walls, wall_list=wl, h=1.0e-3,
                 skin=1.0 * D, gravity=G, layers=layers)
+
+
+def pile3d(layers, width_d=10, seed=5):
+    """The 3D pile: layers x width_d^2 polydisperse spheres (diameters uniform in [0.8, 1.2]
+    mm) on a loose jittered cubic lattice (spacing 1.25 mm) in a box of walls width_d mm wide
+    in x and z: they fall (along -y) and settle into a disordered pile about `layers` grain
+    diameters deep (a random packing of these spheres holds about width_d^2 per layer)."""
+    rng = np.random.default_rng(seed)
+    n = layers * width_d * width_d
+    width = width_d * D
+    a = 1.25 * D
+    ncol = int(width // a)
+    per = ncol * ncol
+    nrow = int(math.ceil(n / per))
+    x0 = 0.5 * (width - (ncol - 1) * a)
+    ijk = np.array([(i, j, k) for j in range(nrow) for k in range(ncol) for i in range(ncol)])[:n]
+    pos = np.zeros((n, 3))
+    pos[:, 0] = x0 + a * ijk[:, 0] + rng.uniform(-0.04, 0.04, n) * D
+    pos[:, 1] = 0.65 * D + a * ijk[:, 1] + rng.uniform(-0.04, 0.04, n) * D
+    pos[:, 2] = x0 + a * ijk[:, 2] + rng.uniform(-0.04, 0.04, n) * D
+    dia = rng.uniform(0.8, 1.2, n) * D
+    top = pos[:, 1].max() + 3 * D
+    walls = "wall xplane 0.0 %r wall zplane 0.0 %r wall yplane 0.0 NULL" % (width, width)
+    wl = [(0, 0.0, 1), (0, width, -1), (2, 0.0, 1), (2, width, -1), (1, 0.0, 1)]
+    box = ((0.0, width), (0.0, top), (0.0, width))
+    desc = ("3D: %d polydisperse spheres (d in [0.8, 1.2] mm) dropped from a loose lattice into a "
+            "box of walls %d x %d mm and settled: a pile about %d grains deep" % (
+                n, width_d, width_d, layers))
+    return dict(name="pile3d", desc=desc, pos=pos, vel=np.zeros((n, 3)), diameter=dia,
+                density=np.full(n, RHO), box=box, walls=walls, wall_list=wl, h=1.0e-3,
+                skin=1.0 * D, gravity=G, layers=layers, dim=3)
 
 
 def crystal(ncol=30, nrow=30):
