@@ -28,7 +28,7 @@ struct CoulombLaw {
   static void project_cone(double *m, double coef)
   {
     const double n = m[0];
-    const double t = std::hypot(m[1], m[2]);
+    const double t = norm2(m[1], m[2]);
     if (t <= coef * n) return;
     if (coef * t <= -n) {
       m[0] = m[1] = m[2] = 0.0;
@@ -61,7 +61,7 @@ struct CoulombLaw {
                           double &shift, double floor)
   {
     const double coef = k.friction;
-    const double gt = std::hypot(g[1], g[2]);
+    const double gt = norm2(g[1], g[2]);
     shift = coef * gt;
     if (m[0] <= 0.0) {
       const double v = coef * gt - g[0];
@@ -73,14 +73,14 @@ struct CoulombLaw {
     const double q = std::abs(q1) + std::abs(q2);
     const double bound = std::max(std::abs(g[0]) + coef * gt * q, gt + gt * q) / scale;
     if (bound * (1.0 + 1e-12) <= floor) return floor;
-    const double dn = std::abs(g[0] - coef * gt * std::hypot(q1, q2));
-    const double dt = std::hypot(g[1] + gt * q1, g[2] + gt * q2);
+    const double dn = std::abs(g[0] - coef * gt * norm2(q1, q2));
+    const double dt = norm2(g[1] + gt * q1, g[2] + gt * q2);
     return (dn > dt ? dn : dt) / scale;
   }
 
   static double shift(const double *g, const Coefficients &k)
   {
-    return k.friction * std::hypot(g[1], g[2]);
+    return k.friction * norm2(g[1], g[2]);
   }
 };
 

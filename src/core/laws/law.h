@@ -12,7 +12,15 @@
 //                           lift-off at the fixed point (De Saxce), 0 for the normal law
 #pragma once
 
+#include <cmath>
+
 namespace hardcontact {
+
+// |(a, b)| for the tangential pairs of the laws: sqrt(a^2 + b^2), within an ulp of std::hypot,
+// whose care for squares beyond the doubles' range (|a| above 1e154 or below 1e-154, far
+// outside the forces and displacements of any grain in any LAMMPS units) cost 34 % of a
+// frictional pile's solve (968 spheres, apgd, perf) against a few % for the square root.
+inline double norm2(double a, double b) { return std::sqrt(a * a + b * b); }
 
 // The coefficients of one row (ContactProblem::friction, ::rolling): what a law reads.
 struct Coefficients {

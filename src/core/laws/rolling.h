@@ -27,7 +27,7 @@ struct RollingLaw {
   {
     const double n = m[0];
     const double coef[2] = {k.friction, k.rolling};
-    const double len[2] = {std::hypot(m[1], m[2]), std::hypot(m[3], m[4])};
+    const double len[2] = {norm2(m[1], m[2]), norm2(m[3], m[4])};
     if (len[0] <= coef[0] * n && len[1] <= coef[1] * n) return;    // inside (n >= 0)
     double best = 0.0;
     for (int set = 0; set < 4; ++set) {    // bit q: term q outside its disc at the root
@@ -73,7 +73,7 @@ struct RollingLaw {
                           double &shift, double floor)
   {
     const double coef[2] = {k.friction, k.rolling};
-    const double gl[2] = {std::hypot(g[1], g[2]), std::hypot(g[3], g[4])};
+    const double gl[2] = {norm2(g[1], g[2]), norm2(g[3], g[4])};
     shift = coef[0] * gl[0] + coef[1] * gl[1];
     if (m[0] <= 0.0) {
       const double v = shift - g[0];
@@ -96,8 +96,8 @@ struct RollingLaw {
       const double cap = coef[q] * m[0];
       if (cap <= 0.0) continue;    // no bound on this pair: no condition
       const double q1 = qs[2 * q], q2 = qs[2 * q + 1];
-      dn -= coef[q] * gl[q] * std::hypot(q1, q2);
-      const double d = std::hypot(g[1 + 2 * q] + gl[q] * q1, g[2 + 2 * q] + gl[q] * q2);
+      dn -= coef[q] * gl[q] * norm2(q1, q2);
+      const double d = norm2(g[1 + 2 * q] + gl[q] * q1, g[2 + 2 * q] + gl[q] * q2);
       worst = worst > d ? worst : d;
     }
     dn = std::abs(dn);
@@ -106,7 +106,7 @@ struct RollingLaw {
 
   static double shift(const double *g, const Coefficients &k)
   {
-    return k.friction * std::hypot(g[1], g[2]) + k.rolling * std::hypot(g[3], g[4]);
+    return k.friction * norm2(g[1], g[2]) + k.rolling * norm2(g[3], g[4]);
   }
 };
 
