@@ -41,6 +41,12 @@ CPU="$(sed -n 's/^model name[[:space:]]*: //p' /proc/cpuinfo | head -1)"
 # a full run describes the machine for the whole report; a partial one (PERF_ONLY) its part
 MACHINE="$RESULTS/perf_machine.csv"
 [ -n "${PERF_ONLY:-}" ] && MACHINE="$RESULTS/perf_machine_${PERF_ONLY//,/_}.csv"
+# a full run measured every part but big again: the notes of earlier partial runs go
+if [ -z "${PERF_ONLY:-}" ]; then
+  for f in "$RESULTS"/perf_machine_*.csv; do
+    [ -e "$f" ] && [ "$f" != "$RESULTS/perf_machine_big.csv" ] && rm -f "$f"
+  done
+fi
 {
   echo "key,value"
   echo "only,\"${PERF_ONLY:-all}\""

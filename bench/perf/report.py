@@ -549,8 +549,10 @@ class Report:
                 "`bench/perf/report.py` and rerun (`bench/perf/report.py` alone redraws from "
                 "`bench/results/perf_*.csv`). Scripts: `bench/perf/` (scenes, decks, runs, this report)." % (
                     m.get("mode"), m.get("date")), "",
-                "**Machine and load.** Timings were taken on a shared %s-core machine (%s) while another "
-                "engineer built and tested beside this benchmark; every run but the 2-rank ones is a "
+                "**Machine and load.** Timings were taken on a shared %s-core virtual machine (%s), "
+                "whose speed varies: identical runs of one deck were seen to differ by up to 40 %% "
+                "within an hour (2026-12-01), so compare ratios of runs of one part rather than "
+                "times across parts or reports; every run but the 2-rank ones is a "
                 "single process (`OMP_NUM_THREADS=1`), run one at a time. Load average (1, 5, 15 min) "
                 "%s before the whole benchmark and %s after; the 1-minute load seen before/after each "
                 "run ranged over %.2f-%.2f (per run in `bench/results/perf_runs.csv`, columns "
