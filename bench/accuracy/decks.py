@@ -13,11 +13,16 @@ def dim_of(scene):
     return scene.get("dim", 2)
 
 
-def head_data(scene, data):
-    """The start of a deck that reads a data file: 2d scenes are periodic in z (LAMMPS needs
-    it for dimension 2), pile3d has walls there."""
+def dimension(scene):
+    """The deck's dimension and z boundary: 2d scenes are periodic in z (LAMMPS needs it for
+    dimension 2), pile3d has walls there."""
     d = dim_of(scene)
-    return HEAD_DATA.format(dim=d, zb="p" if d == 2 else "f", data=data)
+    return dict(dim=d, zb="p" if d == 2 else "f")
+
+
+def head_data(scene, data):
+    """The start of a deck that reads a data file."""
+    return HEAD_DATA.format(data=data, **dimension(scene))
 
 HEAD_RESTART = """units           si
 read_restart    {restart}
@@ -186,8 +191,8 @@ def soft(scene, data, kn, gn, dt, n_settle, viscous, n_window, track_every, dump
         zmin = " v_wf v_wk"
     text = SOFT.format(data=data, zero="" if zero_velocity else "", kn=kn, gn=gn,
                        skin=0.2 * scene["diameter"].mean(), g=scene["gravity"],
-                       width=width, dt=dt, cap=float(cap), dim=dim_of(scene),
-                       zb="p" if dim_of(scene) == 2 else "f", third=third, zgaps=zgaps, zmin=zmin)
+                       width=width, dt=dt, cap=float(cap), third=third, zgaps=zgaps, zmin=zmin,
+                       **dimension(scene))
     nwall = 3 if dim_of(scene) == 2 else 5
     if not zero_velocity:
         text = text.replace("velocity        all set 0.0 0.0 0.0 \n", "")

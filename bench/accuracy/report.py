@@ -27,7 +27,7 @@ COLOR = {"cg": "tab:red", "apgd": "tab:blue", "pgs": "tab:green", "uzawa": "tab:
 MARK = {"cg": "D", "apgd": "o", "pgs": "s", "uzawa": "^"}
 ORDER = ["pile10", "pile30", "pile100", "pile3d", "crystal", "cluster", "pour"]
 TITLE = {"pile10": "pile, 10 layers", "pile30": "pile, 30 layers", "pile100": "pile, 100 layers",
-         "pile3d": "3D pile, 10 layers",
+         "pile3d": "3D pile",    # main() adds its layers
          "crystal": "hexagonal crystal", "cluster": "cluster impact (6.3)", "pour": "pour into a box"}
 
 
@@ -330,14 +330,13 @@ def build_doc(res, figdir_rel, meta, matrix, soft, scenes, slide, figs):
           fmt(meta.get("minutes"), "%.0f")))
     w("")
     for part in meta.get("parts", []):
-        w("Scene%s %s %s run on %s own (`ACCURACY_ONLY=%s bench/run_accuracy.sh`) on %s: %s, "
-          "load %s before and %s after, hardcontact %s, %s min; its rows replaced that scene's "
-          "rows of the run above (ratios within a scene come from one run; times of different "
-          "runs compare only where the processor is the same)." % (
-              "s" if "," in part["only"] else "", part["only"], "were" if "," in part["only"] else "was",
-              "their" if "," in part["only"] else "its", part["only"], part.get("date", "?"),
-              part.get("cpu", "?"), part.get("load_before", "?"), part.get("load_after", "?"),
-              part.get("git", "?"), fmt(part.get("minutes"), "%.0f")))
+        w("Run on its own (`ACCURACY_ONLY=%s bench/run_accuracy.sh`): %s, on %s: %s, load %s "
+          "before and %s after, hardcontact %s, %s min; its rows replaced those scenes' rows of "
+          "the run above (ratios within a scene come from one run; times of different runs "
+          "compare only where the processor is the same)." % (
+              part["only"], part["only"], part.get("date", "?"), part.get("cpu", "?"),
+              part.get("load_before", "?"), part.get("load_after", "?"), part.get("git", "?"),
+              fmt(part.get("minutes"), "%.0f")))
         w("")
     # ---------------------------------------------------------------- summary (filled later)
     summary_at = len(L)
