@@ -4,6 +4,26 @@
 
 namespace hardcontact {
 
+namespace {
+// With friction, an overlap shallower than kKeptOverlap tol size is kept rather than cleared
+// (its target is 0: it may not deepen), and near s = size less, so that a solve leaves at most
+// tol size (f_ID[7] <= tol). A packing at rest is held by static friction: pushing apart the
+// overlaps a solve left at tol asks for a motion its sticking contacts forbid, the problem
+// then nearly has no solution, its forces drift without bound and solves stall at maxiter
+// (doc/performance.md 10.6, bench/run_friction_rest.sh: a tray under a sphere of 1000 x the
+// mass, at rest, 1869 -> 46 iterations per step and 23 -> 0 of 200 solves at maxiter; a
+// 968-sphere pile at rest 102 -> 47).
+// Without friction clearing stays: the packing can slide apart, and a frictionless tray under
+// a heavy sphere needs more iterations without it (27 -> 62 per step: rows at a target of 0
+// carry no force uniquely). A tenth: on the tray a hundredth still stalled (510 iterations
+// per step, a solve at maxiter), 0.3 and all of tol size gave the same iterations, and with
+// all of it curved walls, whose linearisation errs by (v h)^2 / (2 R) on top, went past tol
+// size in the drum (1.4e-4 at tol 1e-4; a tenth: 4.8e-5). What a tenth costs in accuracy: a
+// resting frictional sphere sinks up to tol size / 10 into its support, and its rolling radius
+// is shorter by as much (tests/integration/test_phys_friction.py, HEIGHT and ROLL_V).
+constexpr double kKeptOverlap = 0.1;
+}    // namespace
+
 // Overlap policy: a pair overlapping at q^n (D < 0) is asked to separate by no more than h
 // times the largest velocity the external forces give in one step (g h under gravity), plus
 // twice the solver tolerance on its row scale (residual.h). The first part does not feed on
@@ -32,7 +52,12 @@ void Targets::apply(ContactProblem &p, int first_row) const
     if (d < 0.0) {
       // the row scale without its round-off floor: at rest with no force nothing may move
       const double s = std::min(p.size[c], h * speed_scale);
-      p.gap[c] = std::max(d, -(h * recovery_speed + 2.0 * tol * s));
+      // a frictional row keeps an overlap of up to kKeptOverlap tol size, and never more than
+      // tol (size - s): with the solve's own tol s on top, at most tol size is left (f_ID[7])
+      const bool frictional = !p.friction.empty() && p.friction[c] > 0.0;
+      const double kept =
+          frictional ? tol * std::min(kKeptOverlap * p.size[c], p.size[c] - s) : 0.0;
+      p.gap[c] = std::max(std::min(0.0, d + kept), -(h * recovery_speed + 2.0 * tol * s));
     }
     // a moving wall: g = D + h n . (u_wall - u_i), the gap to where the wall will be
     const int j = p.body_j[c];

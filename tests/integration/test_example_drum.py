@@ -6,9 +6,9 @@ and with the soft-sphere twin. Checks, hard: every sphere stays in the drum (no 
 from the axis than R - r + tol r at any output of the rotation, none lost; while the lattice
 collapses at the start, spheres falling along the wall may overshoot it by the documented
 (v h)^2 / (2 R_c) < 1e-3), the largest overlap relative to the contact size (f_hc[7]) stays
-<= tol at every output of the rotation, at most a quarter of the rotation's solves stopped at
-maxiter (f_hc[6]; while the bed is at rest in the drum's frame, between avalanches, some do:
-a known limit, see below), the bed is dragged up the rising side (the drum turns about +y, its bottom
+<= tol at every output of the rotation, no solve stopped at maxiter (f_hc[6]; while the bed
+rests in the drum's frame between avalanches, 30-47 of the 320 did before the two changes of
+doc/performance.md 10.6), the bed is dragged up the rising side (the drum turns about +y, its bottom
 moves towards -x: the centre of mass moves towards -x by more than 0.4, where the settled
 bed sits within 0.15 of x = 0), and the free surface tilts the right way (drum_angle.py on the
 last frames: between 10 and 50 degrees, rising towards -x). Soft twin: runs, loses no sphere,
@@ -88,20 +88,15 @@ def test():
              "(the concave wall linearised at the contact point)" % rset)
     ov = float(np.max(rot["f_hc[7]"]))
     lr.check(ov <= TOL, "hard: largest overlap %.3g of the contact size <= tol while turning" % ov)
-    # KNOWN (29af849, preconditioned apgd; doc/performance.md 10.4): while the bed turns with
-    # the drum, at rest in its frame, frictional solves may stop at maxiter. At this Froude
-    # number the bed slumps: it rests, avalanches, rests again, and when it rests is chaotic
-    # (a last-bit change of the laws' norms moved the stops from t = 8.5-12.6, 30 of them,
-    # to t = 10-14, 43 on this host and to t = 10-16.5, 47 on the modern one). What is
-    # checked: the overlaps they leave stay within tol (above) and they stay a minority.
-    t, f6 = np.asarray(rot["Time"]), np.asarray(rot["f_hc[6]"])
+    # While the bed turns with the drum, at rest in its frame between avalanches, frictional
+    # solves stopped at maxiter (30-47 of 320, at chaotic times) until apgd's backtracking took
+    # its test from gradients and frictional contacts kept the overlaps within a tenth of tol
+    # (doc/performance.md 10.6): none since, on both hosts.
+    f6 = np.asarray(rot["f_hc[6]"])
     stops = float(f6[-1] - f6[0])
     steps = float(rot["Step"][-1] - rot["Step"][0])
-    late = t[1:][np.diff(f6) > 0]
-    lr.check(stops <= 0.25 * steps,
-             "hard: %d of the rotation's %d solves stopped at maxiter (at most a quarter; the "
-             "last output with a new stop: t = %s)" % (stops, steps,
-                                                      "%.1f" % late[-1] if len(late) else "-"))
+    lr.check(stops == 0.0, "hard: no solve of the rotation's %d stopped at maxiter (%d did)"
+             % (steps, stops))
     ang = drum_angle.drum_angle(res.path("drum.dump"), res.path("log.lammps"),
                                 t_from=TSET + TROT - 3.0)
     lr.check(ang["angle"] is not None and 10.0 <= ang["angle"] <= 50.0,
