@@ -17,6 +17,7 @@
 # Writes bench/results/friction_rest.csv (one row per scene and build: mean and largest
 # iterations per step, solves stopped at maxiter, largest overlap / size, loop time, load).
 #   [OLD_LMP=<lmp_hardcontact>] [MID_LMP=<lmp_hardcontact>] bench/run_friction_rest.sh [--quick]
+# (--quick: shorter settles and windows, to check the script; its pile is not yet at rest)
 set -euo pipefail
 # shellcheck source=common.sh
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh" friction_rest_ "$@"
