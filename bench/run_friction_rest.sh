@@ -55,12 +55,17 @@ for b in "${builds[@]}"; do
 done
 
 # pile and tray: a state from LMP, then the windows
-"$PY" - "$WORK/tray_m1000.data" <<PYEOF
+# the tray's data, and its walls as bench/perf/scenes.py defines them
+TRAY_WALLS=$("$PY" - "$WORK/tray_m1000.data" <<PYEOF
 import sys
 sys.path.insert(0, "$ROOT/bench/perf")
 import scenes
-scenes.write(scenes.tray(1000), sys.argv[1])
+tray = scenes.tray(1000)
+scenes.write(tray, sys.argv[1])
+print(tray["walls"])
 PYEOF
+)
+PILE_WALLS="wall xplane 0 11 wall yplane 0 11 wall zplane 0 NULL"    # bench/compare/in.pile3d
 sed -e 's/hardcontact solver ${solver} wall/hardcontact solver ${solver} ${extra} wall/' \
     -e 's/^thermo .*/thermo          100/' \
     -e 's/^run .*/run             ${n}\nwrite_restart   ${W}/' \
@@ -76,7 +81,7 @@ pair_style      none
 neighbor        0.3 bin
 neigh_modify    delay 0 every 1 check yes
 fix             grav all gravity 1.0 vector 0 0 -1
-fix             hc all hardcontact friction 0.5 wall xplane 0.0 14.0 wall yplane 0.0 14.0 wall zplane 0.0 NULL
+fix             hc all hardcontact friction 0.5 ${walls}
 timestep        0.02
 thermo          50
 run             200
@@ -99,13 +104,13 @@ echo "friction_rest: the pile to rest ($REST steps), settling ($SETTLE), the tra
    -var W rest.restart -log log.rest_settle -echo none > /dev/null)
 (cd "$WORK" && "$LMP" -in in.pile -var solver apgd -var extra "friction 0.5" -var nz 8 \
    -var n "$SETTLE" -var W settle.restart -log log.settle_settle -echo none > /dev/null)
-(cd "$WORK" && "$LMP" -in in.tray_settle -log log.tray_settle -echo none > /dev/null)
+(cd "$WORK" && "$LMP" -in in.tray_settle -var walls "$TRAY_WALLS" -log log.tray_settle \
+   -echo none > /dev/null)
 for b in "${builds[@]}"; do
   name=${b%%:*}; lmp=${b#*:}
   for scene in rest settle tray; do
     echo "friction_rest: $scene window ($name, $WINDOW steps)"
-    if [ $scene != tray ]; then w="wall xplane 0 11 wall yplane 0 11 wall zplane 0 NULL"
-    else w="wall xplane 0.0 14.0 wall yplane 0.0 14.0 wall zplane 0.0 NULL"; fi
+    if [ $scene != tray ]; then w="$PILE_WALLS"; else w="$TRAY_WALLS"; fi
     (cd "$WORK" && "$lmp" -in in.window -var R "$scene.restart" -var walls "$w" -var n "$WINDOW" \
        -log "log.${scene}_$name" -echo none > /dev/null)
     summary "$WORK/log.${scene}_$name" "$scene" "$name" 3 7 8
