@@ -101,6 +101,7 @@ void parse_subspace(LAMMPS *lmp, char **values, int, FixOptions &o)
                       "got {}",
                       kMaxSubspace, values[0]);
   o.settings.subspace = static_cast<int>(n);
+  o.subspace_given = true;
 }
 
 void parse_rho(LAMMPS *lmp, char **values, int, FixOptions &o)
@@ -281,7 +282,7 @@ const Keyword keywords[] = {
     {"rho", 1, 0, parse_rho, "rho value: fixed solver step (omit: automatic)"},
     {"subspace", 1, 0, parse_subspace,
      "subspace N: cg or apgd (frictionless) start from the best point in the span of the last N "
-     "corrections (0: off)"},
+     "corrections (default 10 for cg without friction, else 0: off)"},
     {"warmstart", 1, 0, parse_warmstart, "warmstart yes/no: start from the last step's forces"},
     {"wall", 2, 1, parse_wall,
      "wall xplane|yplane|zplane lo hi: flat walls, NULL for none, v_name for a moving one; "

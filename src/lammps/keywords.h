@@ -19,6 +19,9 @@ struct FixOptions {
   // empty: the default, chosen once the law is known (cg without friction, apgd with it)
   std::string solver_name;
   SolverSettings settings;
+  // whether `subspace` was given; if not, the fix picks kDefaultSubspace where it applies
+  bool subspace_given = false;
+  static constexpr int kDefaultSubspace = 10;
   std::vector<PlaneWall> walls;
   std::vector<std::string> wall_variables;    // per wall: equal-style variable name, or ""
   std::vector<std::string> wall_regions;      // IDs of regions whose surfaces are walls

@@ -11,7 +11,9 @@ step: the largest overlap f_ID[7] at most tol (it is an overlap relative to the 
 size), no maxiter stop, the kinetic energy per sphere at rest below 1e-8 m g d in the window;
 and against the run without: the heavy sphere at the same height (1e-6 d; both are the scheme's
 answer to tol), and the mechanism at work: the window's mean iterations per step at most half
-(measured: cg 32 -> 2-4, apgd 48 -> 1.5 here, 880 -> 5-16 from bench/perf's rest state). Run
+(measured: cg 32 -> 2-4, apgd 48 -> 1.5 here, 880 -> 5-16 from bench/perf's rest state).
+`subspace 10` is cg's default without friction: cg also runs without the keyword, and must give
+the run with `subspace 10` step for step (iterations, height and kinetic energy to the bit). Run
 at np 1, 2 and 4: every process takes the same coefficients (one reduction), or a row held by two
 processes would get two forces."""
 
@@ -41,7 +43,7 @@ pair_style      none
 neighbor        0.3 bin
 neigh_modify    delay 0 every 1 check yes
 fix             grav all gravity 1.0 vector 0 0 -1
-fix             hc all hardcontact solver {solver} tol {tol} subspace {n} wall xplane 0.0 14.0 wall yplane 0.0 14.0 wall zplane 0.0 NULL
+fix             hc all hardcontact solver {solver} tol {tol} {subspace}wall xplane 0.0 14.0 wall yplane 0.0 14.0 wall zplane 0.0 NULL
 timestep        0.02
 variable        zh equal z[197]
 thermo_style    custom step ke v_zh f_hc[1] f_hc[6] f_hc[7]
@@ -52,8 +54,10 @@ run             {steps}
 
 
 def run(args, solver, n):
-    deck = DECK.format(solver=solver, tol=TOL, n=n, steps=SETTLE + WINDOW)
-    name = "%s/%s_subspace%d" % (args.workdir, solver, n)
+    """n: the subspace keyword's value, or None: no keyword (the fix's default)"""
+    deck = DECK.format(solver=solver, tol=TOL, steps=SETTLE + WINDOW,
+                       subspace="" if n is None else "subspace %d " % n)
+    name = "%s/%s_subspace%s" % (args.workdir, solver, "default" if n is None else n)
     res = lr.run_deck(args.lmp, deck, args.np, name, timeout=args.timeout)
     return pc.thermo_block(res, ["Step", "KinEng", "v_zh", "f_hc[1]", "f_hc[6]", "f_hc[7]"])
 
@@ -76,6 +80,8 @@ def test():
     args = lr.test_args(__doc__)
     for solver in ("cg", "apgd"):
         off, on = run(args, solver, 0), run(args, solver, 10)
+        if solver == "cg":
+            on_cg = on
         check_run(on, solver)
         dz = abs(on["v_zh"][-1] - off["v_zh"][-1])
         lr.check(dz <= 1e-6, "%s: heavy sphere at the same height with and without (|dz| = %.3g d)"
@@ -85,6 +91,11 @@ def test():
         lr.check(w_on <= 0.5 * w_off,
                  "%s: iterations per step in the window %.3g with subspace 10 <= half of %.3g "
                  "without" % (solver, w_on, w_off))
+    default = run(args, "cg", None)
+    same = all(list(default[k]) == list(on_cg[k]) for k in ("Step", "KinEng", "v_zh", "f_hc[1]"))
+    lr.check(same, "cg without the keyword runs as with subspace 10, step for step (iterations in "
+             "the window %.3g against %.3g)" % (sum(default["f_hc[1]"][SETTLE + 1:]) / WINDOW,
+                                                sum(on_cg["f_hc[1]"][SETTLE + 1:]) / WINDOW))
 
 
 
