@@ -73,8 +73,11 @@ PART_OF_GROUP = dict(heights="heights", tray="tray", throughput="throughput", tt
 # "At rest" for the part still: kinetic energy per sphere below this x m g d (the windows of
 # the part heights start where the settle ends, at 1e-3 m g d: the piles still creep there)
 STILL_KE = 1e-10
-# cg's subspace start (subspace N) on the scenes at rest (parts still and tray)
-SUBSPACE = 10
+# cg's subspace start: the fix's default without friction is `subspace 10` (a run without the
+# keyword records the value it ran with); the scenes at rest (parts still and tray) also run the
+# same window with `subspace 0`, the start before it became the default (2026-12-01)
+DEFAULT_SUBSPACE = {"cg": 10}
+PLAIN = 0
 
 
 def loadavg():
@@ -157,14 +160,18 @@ class Bench:
         return text, time.time() - t, before, loadavg()
 
     def hard(self, rid, group, scene, data, solver, tol, phases, names, extra=None,
-             start=None, restart_out=None, ranks=1, h=0.02, skin=0.3, subspace=0):
+             start=None, restart_out=None, ranks=1, h=0.02, skin=0.3, subspace=None):
         """One hardcontact run with the given phases [(steps, cap[, until])] (until: the phase
         ends once the kinetic energy per sphere is below until x m g d), thermo every step; one
         row per phase in perf_runs.csv."""
         rundir = self.work / rid
         start = start or ("data", str(data))
+        # None: the fix's default (no keyword); recorded as the value the fix runs with
+        fix_extra = "subspace %d" % subspace if subspace is not None else ""
+        if subspace is None:
+            subspace = DEFAULT_SUBSPACE.get(solver, 0)
         deck = decks.hard(scene, start, solver, tol, [(p[0], 1) + tuple(p[1:]) for p in phases],
-                          h=h, skin=skin, fix_extra="subspace %d" % subspace if subspace else "",
+                          h=h, skin=skin, fix_extra=fix_extra,
                           ranks_2d=ranks > 1 or (extra or {}).get("mpi_ref", False),
                           restart_out=restart_out and str(rundir / restart_out))
         self.note("%s: %s tol %g, %d spheres, %s ranks %d" % (rid, solver, tol, scene["n"],
@@ -323,10 +330,10 @@ class Bench:
                       [(c["still_steps"], c["still_cap"], STILL_KE), (c["window"], c["long_cap"])],
                       ["calm", "still"], start=("restart", str(restart)), restart_out="calm.restart")
             calm = self.work / rid / "calm.restart"
-            if calm.exists():    # the same window from the same state, cg's subspace start on
-                self.hard("still_%s_%s_subspace%d" % (name, REF, SUBSPACE), "still", sc, data, REF,
+            if calm.exists():    # the same window from the same state, without the subspace start
+                self.hard("still_%s_%s_subspace%d" % (name, REF, PLAIN), "still", sc, data, REF,
                           1e-4, [(c["subspace_window"], c["long_cap"])], ["still"],
-                          start=("restart", str(calm)), subspace=SUBSPACE)
+                          start=("restart", str(calm)), subspace=PLAIN)
 
     def tray(self):
         c = self.cfg
@@ -340,9 +347,9 @@ class Bench:
                       restart_out="settled.restart")
             restart = self.work / rid / "settled.restart"
             if restart.exists():
-                self.hard("tray_%s_%s_subspace%d_rest" % (name, REF, SUBSPACE), "tray", sc, data, REF,
+                self.hard("tray_%s_%s_subspace%d_rest" % (name, REF, PLAIN), "tray", sc, data, REF,
                           1e-4, [(c["subspace_window"], c["window_cap"])], ["rest"],
-                          start=("restart", str(restart)), subspace=SUBSPACE)
+                          start=("restart", str(restart)), subspace=PLAIN)
             for solver in c["tray_solvers"]:
                 if solver != REF and restart.exists():
                     self.hard("tray_%s_%s_rest" % (name, solver), "tray", sc, data, solver, 1e-4,
