@@ -15,7 +15,7 @@
 set -euo pipefail
 # shellcheck source=common.sh
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh" subspace_default_ "$@"
-ROUNDS=3; SETTLE=300; REST=2000; WINDOW=200; TRAY_WINDOW=500; NZ=20
+ROUNDS=5; SETTLE=300; REST=2000; WINDOW=200; TRAY_WINDOW=500; NZ=20
 [ "$MODE" = quick ] && { ROUNDS=1; SETTLE=60; REST=200; WINDOW=20; TRAY_WINDOW=40; NZ=5; }
 CSV="$RESULTS/subspace_default.csv"
 [ "$MODE" = quick ] && CSV="$WORK/subspace_default.csv"
@@ -113,8 +113,11 @@ for scene in ("settle", "rest", "tray"):
     it_off, it_on = float(off[0]["it_mean"]), float(on[0]["it_mean"])
     t_off = sorted(float(r["loop_s"]) for r in off)
     t_on = sorted(float(r["loop_s"]) for r in on)
-    print("%-6s it/step %.1f -> %.1f; loop s (best of %d) %.3f -> %.3f (%.2f x); all: %s -> %s"
+    med = lambda t: t[len(t) // 2]
+    print("%-6s it/step %.1f -> %.1f; loop s best of %d %.3f -> %.3f (%.2f x), median %.3f -> "
+          "%.3f (%.2f x); all: %s -> %s"
           % (scene, it_off, it_on, len(t_off), t_off[0], t_on[0], t_on[0] / t_off[0],
+             med(t_off), med(t_on), med(t_on) / med(t_off),
              " ".join("%.3f" % t for t in t_off), " ".join("%.3f" % t for t in t_on)))
 PYEOF
 } | tee "$WORK/summary.txt"
