@@ -19,3 +19,48 @@ SOFT_LMP="${SOFT_LMP:-/usr/bin/lmp}"
 WORK="${BENCH_WORKDIR:-$ROOT/bench/work}/$_bench_prefix$MODE"
 RESULTS="$ROOT/bench/results"
 mkdir -p "$WORK" "$RESULTS"
+
+# Scenes two entry scripts share (run_friction_rest.sh, run_subspace_default.sh):
+# the walls of bench/compare/in.pile3d
+PILE_WALLS="wall xplane 0 11 wall yplane 0 11 wall zplane 0 NULL"
+# bench_tray_1000 FILE: the tray of doc/performance.md section 2 (196 small spheres under one of
+# 1000 x their mass, bench/perf/scenes.py) written to FILE; prints its wall keywords
+bench_tray_1000() {
+  "$PY" - "$1" <<PYEOF
+import sys
+sys.path.insert(0, "$ROOT/bench/perf")
+import scenes
+tray = scenes.tray(1000)
+scenes.write(tray, sys.argv[1])
+print(tray["walls"])
+PYEOF
+}
+# bench_pile_deck OUT SED: bench/compare/in.pile3d with a slot ${extra} for more keywords of the
+# fix and a write_restart ${W} after its run, its thermo lines changed by the sed expression SED
+bench_pile_deck() {
+  sed -e 's/hardcontact solver ${solver} wall/hardcontact solver ${solver} ${extra} wall/' \
+      -e "$2" \
+      -e 's/^run .*/run             ${n}\nwrite_restart   ${W}/' \
+      "$ROOT/bench/compare/in.pile3d" > "$1"
+}
+# bench_tray_settle_deck OUT KEYWORDS: the tray (tray_m1000.data in the run's folder) settled
+# for 200 steps by the default solver with KEYWORDS, written to tray.restart; walls ${walls}
+bench_tray_settle_deck() {
+  cat > "$1" <<EOF
+units           lj
+dimension       3
+atom_style      sphere
+boundary        f f f
+atom_modify     map array
+read_data       tray_m1000.data
+pair_style      none
+neighbor        0.3 bin
+neigh_modify    delay 0 every 1 check yes
+fix             grav all gravity 1.0 vector 0 0 -1
+fix             hc all hardcontact ${2:+$2 }\${walls}
+timestep        0.02
+thermo          50
+run             200
+write_restart   tray.restart
+EOF
+}

@@ -55,38 +55,9 @@ for b in "${builds[@]}"; do
 done
 
 # pile and tray: a state from LMP, then the windows
-# the tray's data, and its walls as bench/perf/scenes.py defines them
-TRAY_WALLS=$("$PY" - "$WORK/tray_m1000.data" <<PYEOF
-import sys
-sys.path.insert(0, "$ROOT/bench/perf")
-import scenes
-tray = scenes.tray(1000)
-scenes.write(tray, sys.argv[1])
-print(tray["walls"])
-PYEOF
-)
-PILE_WALLS="wall xplane 0 11 wall yplane 0 11 wall zplane 0 NULL"    # bench/compare/in.pile3d
-sed -e 's/hardcontact solver ${solver} wall/hardcontact solver ${solver} ${extra} wall/' \
-    -e 's/^thermo .*/thermo          100/' \
-    -e 's/^run .*/run             ${n}\nwrite_restart   ${W}/' \
-    "$ROOT/bench/compare/in.pile3d" > "$WORK/in.pile"
-cat > "$WORK/in.tray_settle" <<'EOF'
-units           lj
-dimension       3
-atom_style      sphere
-boundary        f f f
-atom_modify     map array
-read_data       tray_m1000.data
-pair_style      none
-neighbor        0.3 bin
-neigh_modify    delay 0 every 1 check yes
-fix             grav all gravity 1.0 vector 0 0 -1
-fix             hc all hardcontact friction 0.5 ${walls}
-timestep        0.02
-thermo          50
-run             200
-write_restart   tray.restart
-EOF
+TRAY_WALLS=$(bench_tray_1000 "$WORK/tray_m1000.data")
+bench_pile_deck "$WORK/in.pile" 's/^thermo .*/thermo          100/'
+bench_tray_settle_deck "$WORK/in.tray_settle" "friction 0.5"
 cat > "$WORK/in.window" <<'EOF'
 read_restart    ${R}
 neighbor        0.3 bin

@@ -29,37 +29,9 @@ row() {
     f && $1 ~ /^[0-9]+$/ {if (first) {first=0; next} n++; it+=$3}
     END{printf "%s,%s,%d,%d,%.2f,%.3f,%s\n", s, st, r, n, it/n, t, l}' "$1" >> "$CSV"
 }
-TRAY_WALLS=$("$PY" - "$WORK/tray_m1000.data" <<PYEOF
-import sys
-sys.path.insert(0, "$ROOT/bench/perf")
-import scenes
-tray = scenes.tray(1000)
-scenes.write(tray, sys.argv[1])
-print(tray["walls"])
-PYEOF
-)
-PILE_WALLS="wall xplane 0 11 wall yplane 0 11 wall zplane 0 NULL"    # bench/compare/in.pile3d
-sed -e 's/hardcontact solver ${solver} wall/hardcontact solver ${solver} ${extra} wall/' \
-    -e 's/^thermo_style .*/thermo_style    custom step ke f_hc[1] f_hc[3] f_hc[4]/' \
-    -e 's/^run .*/run             ${n}\nwrite_restart   ${W}/' \
-    "$ROOT/bench/compare/in.pile3d" > "$WORK/in.pile"
-cat > "$WORK/in.tray_settle" <<'EOF'
-units           lj
-dimension       3
-atom_style      sphere
-boundary        f f f
-atom_modify     map array
-read_data       tray_m1000.data
-pair_style      none
-neighbor        0.3 bin
-neigh_modify    delay 0 every 1 check yes
-fix             grav all gravity 1.0 vector 0 0 -1
-fix             hc all hardcontact ${walls}
-timestep        0.02
-thermo          50
-run             200
-write_restart   tray.restart
-EOF
+TRAY_WALLS=$(bench_tray_1000 "$WORK/tray_m1000.data")
+bench_pile_deck "$WORK/in.pile" 's/^thermo_style .*/thermo_style    custom step ke f_hc[1] f_hc[3] f_hc[4]/'
+bench_tray_settle_deck "$WORK/in.tray_settle" ""
 cat > "$WORK/in.window" <<'EOF'
 read_restart    ${R}
 neighbor        0.3 bin
