@@ -82,8 +82,7 @@ void ApgdSolver<Law>::start(const SolverSettings &s, std::vector<double> &mu,
   const size_t n = static_cast<size_t>(B) * nc;
   if (s.subspace > 0) {
     past_.follow(this->op_.problem(), this->op_.ops());
-    try_start_ = past_.due();
-    if (try_start_) past_.rows_used([&](int c) { this->set_.include(c); });
+    if (past_.due()) past_.rows_used([&](int c) { this->set_.include(c); });
     warm_.assign(mu.begin(), mu.begin() + static_cast<std::ptrdiff_t>(n));
   } else {
     past_.clear();
@@ -98,7 +97,7 @@ void ApgdSolver<Law>::start(const SolverSettings &s, std::vector<double> &mu,
   gaps(mu, this->g_, u);
   // the subspace start, the blocks projected onto the law's set; the shifts stay those of the
   // warm start (the fixed point moves them, as after any start)
-  if (s.subspace > 0 && try_start_)
+  if (s.subspace > 0 && past_.trying())
     past_.improve_start(
         this->op_.problem(), this->set_.rows(), this->op_.ops(), mu, this->g_, u,
         [&](int c, double *m) { Law::project(m, this->coef(c)); },

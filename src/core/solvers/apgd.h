@@ -66,7 +66,6 @@ class ApgdSolver : public IterativeSolver<Law> {
   // subspace start: the corrections, the start this solve received (and the scratch of a
   // correction's product)
   PastCorrections past_{B};
-  bool try_start_ = false;    // this solve tries the subspace start (PastCorrections::due)
   std::vector<double> warm_;
   std::vector<Vec3> scratch_u_;
 };

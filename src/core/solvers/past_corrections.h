@@ -19,7 +19,6 @@
 #include <Eigen/Dense>
 
 #include <algorithm>
-
 #include <vector>
 
 namespace hardcontact {
@@ -41,13 +40,12 @@ class PastCorrections {
   // takes the same decision: the outcome of a try is a reduced sum.
   bool due()
   {
-    if (w_.empty()) return false;
-    if (skip_ > 0) {
-      --skip_;
-      return false;
-    }
-    return true;
+    trying_ = !w_.empty() && skip_ == 0;
+    if (!w_.empty() && skip_ > 0) --skip_;
+    return trying_;
   }
+  // what the last due() said: improve_start runs only then
+  bool trying() const { return trying_; }
   void clear()
   {
     w_.clear();
@@ -140,6 +138,7 @@ class PastCorrections {
   static constexpr int kMaxSkip = 16;
   int backoff_ = 0;    // solves skipped after the last refused move (0: the last was kept)
   int skip_ = 0;       // solves still to skip
+  bool trying_ = false;
   int block_;
   std::vector<std::vector<double>> w_, aw_;    // newest first
   std::vector<int> bodies_i_, bodies_j_;       // the rows they are stored on

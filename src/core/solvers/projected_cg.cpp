@@ -23,8 +23,7 @@ void ProjectedCg::start(const SolverSettings &s, std::vector<double> &mu, std::v
   // The past corrections follow the rows by their bodies (past_corrections.h)
   if (s.subspace > 0) {
     past_.follow(p, op_.ops());
-    try_start_ = past_.due();
-    if (try_start_) past_.rows_used([&](int c) { set_.include(c); });
+    if (past_.due()) past_.rows_used([&](int c) { set_.include(c); });
     warm_.assign(mu.begin(), mu.begin() + nc);
   } else {
     past_.clear();
@@ -50,7 +49,7 @@ void ProjectedCg::start(const SolverSettings &s, std::vector<double> &mu, std::v
   regap(mu, g_, u);
   index_rows();
   // the subspace start (past_corrections.h), forces clipped at 0
-  if (s.subspace > 0 && try_start_)
+  if (s.subspace > 0 && past_.trying())
     past_.improve_start(p, set_.rows(), op_.ops(), mu, g_, u,
                         [](int, double *m) { m[0] = m[0] > 0.0 ? m[0] : 0.0; }, regap);
   refresh(mu);

@@ -94,7 +94,6 @@ class ProjectedCg : public IterativeSolver<NormalLaw> {
   // Past corrections (subspace start, SolverSettings::subspace), with their products A w
   // (set rows of the step that made them)
   PastCorrections past_{1};
-  bool try_start_ = false;    // this solve tries the subspace start (PastCorrections::due)
   std::vector<double> warm_;            // the start this solve received
   double sums_[2] = {0.0, 0.0};
   double residual_ = 0.0, gamma_num_ = 0.0, pq_ = 0.0;
