@@ -97,11 +97,11 @@ class Bench:
         self.t0 = time.time()
         self.data = {}
         self.part = ""
-        # A partial run (--only) keeps the rows of the other parts from the last runs, so the
-        # report covers every part; a row's part is its own column or, in files written before
-        # it existed, follows from its group.
-        if set(args.only.split(",")) != set(DEFAULT_PARTS.split(",")):
-            self.keep_other_parts(args.only.split(","))
+        # A run keeps the rows of the parts it does not run from the last runs, so the report
+        # covers every part: a partial run (--only) the other parts, a full run the part big
+        # (run only when named; a full run of b43485a dropped its rows). A row's part is its
+        # own column or, in files written before it existed, follows from its group.
+        self.keep_other_parts(args.only.split(","))
 
     def keep_other_parts(self, only):
         for fname, rows in (("perf_runs.csv", self.runs), ("perf_steps.csv", self.steps)):
