@@ -18,6 +18,10 @@ class DistributedOps {
   virtual double sum_all(double local) = 0;
   // In place, n values at once (one message instead of n).
   virtual void sum_all(double *values, int n) = 0;
+  // In place, in one message: values[0..n_sum) summed and the n_max values after them
+  // maximised. Every reduction is a point where all processes wait for the slowest, so a
+  // solver that needs a sum and a maximum at the same point asks for both at once.
+  virtual void sum_max_all(double *values, int n_sum, int n_max) = 0;
 };
 
 class SerialOps : public DistributedOps {
@@ -26,6 +30,7 @@ class SerialOps : public DistributedOps {
   double max_all(double local) override { return local; }
   double sum_all(double local) override { return local; }
   void sum_all(double *, int) override {}
+  void sum_max_all(double *, int, int) override {}
 };
 
 }    // namespace hardcontact

@@ -10,6 +10,8 @@
 
 #include <mpi.h>
 
+#include <algorithm>
+
 namespace hardcontact {
 
 constexpr int kDoublesPerVec3 = static_cast<int>(sizeof(Vec3) / sizeof(double));
@@ -56,12 +58,49 @@ class LammpsOps : public DistributedOps {
   {
     MPI_Allreduce(MPI_IN_PLACE, values, n, MPI_DOUBLE, MPI_SUM, world_);
   }
+  // One MPI_Allreduce with a user operation over [n_sum, sums..., maxima...]: the leading
+  // count tells the operation where the sums end (it is the same on every process, so the
+  // operation leaves it unchanged).
+  void sum_max_all(double *values, int n_sum, int n_max) override
+  {
+    const int n = n_sum + n_max;
+    if (n > kMaxSumMax)
+      compat::error_one(error_, FLERR, "Fix hardcontact: {} reduced values exceed {}", n,
+                        kMaxSumMax);
+    double buffer[kMaxSumMax + 1];
+    buffer[0] = n_sum;
+    std::copy(values, values + n, buffer + 1);
+    MPI_Allreduce(MPI_IN_PLACE, buffer, n + 1, MPI_DOUBLE, sum_max_op(), world_);
+    std::copy(buffer + 1, buffer + 1 + n, values);
+  }
 
   // Read by the fix's pack/unpack_forward_comm: what is being sent, per LAMMPS atom index.
   double *data() const { return data_; }
   int per_body() const { return per_body_; }
 
  private:
+  static constexpr int kMaxSumMax = 8;
+  // [count, sums..., maxima...] combined element by element (commutative)
+  static void combine_sum_max(void *in, void *inout, int *len, MPI_Datatype *)
+  {
+    const double *a = static_cast<const double *>(in);
+    double *b = static_cast<double *>(inout);
+    const int n_sum = static_cast<int>(a[0]);
+    for (int k = 1; k <= n_sum; ++k) b[k] += a[k];
+    for (int k = n_sum + 1; k < *len; ++k) b[k] = std::max(b[k], a[k]);
+  }
+  // Created at the first use and kept for the process's life: MPI frees user operations at
+  // MPI_Finalize, and a fix may be deleted after it (a Python driver's interpreter exit).
+  static MPI_Op sum_max_op()
+  {
+    static MPI_Op op = [] {
+      MPI_Op o;
+      MPI_Op_create(&combine_sum_max, 1, &o);
+      return o;
+    }();
+    return op;
+  }
+
   LAMMPS_NS::Fix *fix_ = nullptr;
   LAMMPS_NS::Comm *comm_ = nullptr;
   LAMMPS_NS::Error *error_ = nullptr;

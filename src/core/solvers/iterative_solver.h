@@ -53,12 +53,19 @@ class IterativeSolver : public Solver {
     report.dump_failed = dump_failed;
     for (int k = 0;; ++k) {
       report.iterations = k;
-      report.residual = ops.max_all(set_residual(mu, u));
       [[maybe_unused]] double drift = 0.0;    // friction: how far the shifts are from Law::shift of the iterate
-      if constexpr (B > 1) {
+      if constexpr (B == 1) {
+        report.residual = residual_all(mu, u);
+      } else {
+        // the residual and the drift (which reads the law_shift_ set_residual leaves) in one
+        // reduction
+        double worst[2] = {set_residual(mu, u), 0.0};
+        worst[1] = local_shift_drift();
+        ops.sum_max_all(worst, 0, 2);
+        report.residual = worst[0];
+        drift = worst[1];
         // Friction's fixed point: solving the problem of stale shifts further than they are
         // off is wasted work, so the shifts move as soon as the residual is below their drift.
-        drift = shift_drift();
         if (drift > s.tol && report.residual <= kShiftEagerness * drift && k < s.maxiter) {
           // a fixed point that stopped approaching: from now on shifts only go down
           if (drift < 0.5 * best_drift_) {
@@ -162,6 +169,13 @@ class IterativeSolver : public Solver {
     }
     return r;
   }
+  // The largest violation over the working set on every process (the stopping test's), at
+  // (mu, u), without friction (with friction solve() reduces it with the shifts' drift). A
+  // solver that reduces it together with its own sums overrides this.
+  virtual double residual_all(const std::vector<double> &mu, const std::vector<Vec3> &u)
+  {
+    return op_.ops().max_all(set_residual(mu, u));
+  }
   // Row c's violation at (mu, g_) for a largest one over rows: a row at most floor (the
   // largest so far) may give floor instead (laws/coulomb.h). With friction it keeps
   // law_shift_[c] = Law::shift(g_ of c), computed with it.
@@ -178,7 +192,7 @@ class IterativeSolver : public Solver {
   std::vector<double> g_;    // g(mu) on the working set; kept between solves (no allocation)
   // Friction: Law::shift of g_ per set row, what the shifts move to (before the downward rule
   // of next_shift()). set_residual() leaves it current, from the norms of g_'s tangential
-  // components that the violations take anyway (shift_drift() reads it right after: a second
+  // components that the violations take anyway (local_shift_drift() reads it right after: a second
   // hypot per row and iteration was 6 % of a frictional pile's instructions). A shift move
   // changes only g_'s normal components, so it stays current through move_shifts().
   std::vector<double> law_shift_;
@@ -206,13 +220,13 @@ class IterativeSolver : public Solver {
     const double now = op_.shift(c);
     return downward_ && next > now ? now : next;
   }
-  // Largest |next_shift - s_c| / scale over the working set, all processes.
-  double shift_drift()
+  // Largest |next_shift - s_c| / scale over this process's working set (solve() reduces it).
+  double local_shift_drift() const
   {
     double worst = 0.0;
     for (const int c : set_.rows())
       worst = std::max(worst, std::abs(next_shift(c) - op_.shift(c)) / set_.scale(c));
-    return op_.ops().max_all(worst);
+    return worst;
   }
   // Friction's normal shifts s_c = Law::shift (laws/law.h) from the start multipliers.
   void start_shifts(const std::vector<double> &mu, std::vector<Vec3> &u)

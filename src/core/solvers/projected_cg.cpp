@@ -85,7 +85,7 @@ void ProjectedCg::finished(const SolverSettings &s, const std::vector<double> &m
   past_.record(std::move(d), std::move(ad), p, s.subspace);
 }
 
-double ProjectedCg::set_residual(const std::vector<double> &, const std::vector<Vec3> &)
+double ProjectedCg::residual_all(const std::vector<double> &, const std::vector<Vec3> &)
 {
   return residual_;
 }
@@ -126,8 +126,11 @@ void ProjectedCg::refresh_with(const std::vector<double> &mu, Update &&update)
     r = std::max(r, NormalLaw::violation(g[c], m[c], scale[c]));
     if (counted[c] && (m[c] > 0.0 || g[c] < 0.0)) num += g[c] * inv_d[c] * q[c];    // free()
   }
-  residual_ = r;
-  gamma_num_ = op_.ops().sum_all(num);
+  // one reduction where two would be: the stopping test reads residual_ (residual_all)
+  double v[2] = {num, r};
+  op_.ops().sum_max_all(v, 1, 1);
+  gamma_num_ = v[0];
+  residual_ = v[1];
 }
 
 void ProjectedCg::refresh(const std::vector<double> &mu)
@@ -171,11 +174,11 @@ double ProjectedCg::product(const std::vector<double> &mu, double gamma)
     gd += g[c] * d;
     dq += d * qc;
   }
-  double s[2] = {gd, dq};
-  op_.ops().sum_all(s, 2);
+  double s[3] = {gd, dq, ratio};
+  op_.ops().sum_max_all(s, 2, 1);
   sums_[0] = s[0];
   sums_[1] = s[1];
-  return op_.ops().max_all(ratio);
+  return s[2];
 }
 
 void ProjectedCg::move(double a, std::vector<double> &mu, std::vector<Vec3> &u)

@@ -35,7 +35,8 @@ class ProjectedCg : public IterativeSolver<NormalLaw> {
   void grown(const SolverSettings &s, std::vector<double> &mu, std::vector<Vec3> &u) override;
   void finished(const SolverSettings &s, const std::vector<double> &mu,
                 const std::vector<Vec3> &u) override;
-  double set_residual(const std::vector<double> &mu, const std::vector<Vec3> &u) override;
+  // residual_, reduced by the last refresh together with gamma's numerator
+  double residual_all(const std::vector<double> &mu, const std::vector<Vec3> &u) override;
 
  public:
   double memory_usage() const override
@@ -51,7 +52,8 @@ class ProjectedCg : public IterativeSolver<NormalLaw> {
   bool free(int c, const std::vector<double> &mu) const { return mu[c] > 0.0 || g_[c] < 0.0; }
   // dir_ on the free rows (D^-1 g - gamma dir), w_ its velocity change, q_ = A dir_;
   // sums_ = g.dir, dir.A dir (counted rows, all processes); returns the largest dir / mu
-  // (the inverse of the step at which the first force reaches 0), all processes.
+  // (the inverse of the step at which the first force reaches 0), all processes: the sums
+  // and the maximum in one reduction.
   double product(const std::vector<double> &mu, double gamma);
   // mu -= a dir_, g -= a q_, u -= a w_ (ghosts included: w_ was forwarded).
   void move(double a, std::vector<double> &mu, std::vector<Vec3> &u);
@@ -68,7 +70,8 @@ class ProjectedCg : public IterativeSolver<NormalLaw> {
   // Taken if it lowers phi at least by `floor` (the decrease of the step to the bound);
   // returns whether it was.
   bool projected_step(double a, double floor, std::vector<double> &mu, std::vector<Vec3> &u);
-  // After mu changed: residual_ and gamma's numerator (D^-1 g_new).A dir over free rows.
+  // After mu changed: residual_ and gamma's numerator (D^-1 g_new).A dir over free rows,
+  // both over all processes in one reduction.
   void refresh(const std::vector<double> &mu);
   // the same with each row first updated by update(c) (a move fused into the pass)
   template <class Update>
