@@ -34,7 +34,10 @@ LOAD_BEFORE="$(cut -d' ' -f1-3 /proc/loadavg)"
   --work "$WORK" --results "$RESULTS" --only "${PERF_ONLY:-heights,still,tray,throughput,tts,steps}" \
   2>&1 | tee "$WORK/run_log.txt"
 LOAD_AFTER="$(cut -d' ' -f1-3 /proc/loadavg)"
-cp "$WORK/run_log.txt" "$RESULTS/perf_run_log.txt"
+# a partial run's log goes beside the full run's, which it would otherwise replace
+RUN_LOG="$RESULTS/perf_run_log.txt"
+[ -n "${PERF_ONLY:-}" ] && RUN_LOG="$RESULTS/perf_run_log_${PERF_ONLY//,/_}.txt"
+cp "$WORK/run_log.txt" "$RUN_LOG"
 
 LAMMPS_VERSION="$(echo "info" | "$SOFT_LMP" 2>/dev/null | sed -n 's/^LAMMPS (\(.*\))$/\1/p' | head -1)"
 CPU="$(sed -n 's/^model name[[:space:]]*: //p' /proc/cpuinfo | head -1)"
