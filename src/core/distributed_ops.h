@@ -5,6 +5,17 @@
 
 namespace hardcontact {
 
+// The element-wise step of sum_max_all over a message [n_sum, sums..., maxima...] of len
+// doubles: inout = in combined with inout (sums added, maxima compared). Commutative, and the
+// leading count is the same on every process, so it is left as it is. A host's reduction
+// calls it (LammpsOps: the user operation of one MPI_Allreduce).
+inline void combine_sum_max(const double *in, double *inout, int len)
+{
+  const int n_sum = static_cast<int>(in[0]);
+  for (int k = 1; k <= n_sum; ++k) inout[k] += in[k];
+  for (int k = n_sum + 1; k < len; ++k) inout[k] = inout[k] > in[k] ? inout[k] : in[k];
+}
+
 // The widest value the core forwards per body: one velocity (3 doubles; contact degrees are
 // one). A host sizes its communication buffers with it.
 constexpr int kMaxForwardPerBody = 3;

@@ -80,14 +80,10 @@ class LammpsOps : public DistributedOps {
 
  private:
   static constexpr int kMaxSumMax = 8;
-  // [count, sums..., maxima...] combined element by element (commutative)
-  static void combine_sum_max(void *in, void *inout, int *len, MPI_Datatype *)
+  // [count, sums..., maxima...] combined element by element (core/distributed_ops.h)
+  static void combine(void *in, void *inout, int *len, MPI_Datatype *)
   {
-    const double *a = static_cast<const double *>(in);
-    double *b = static_cast<double *>(inout);
-    const int n_sum = static_cast<int>(a[0]);
-    for (int k = 1; k <= n_sum; ++k) b[k] += a[k];
-    for (int k = n_sum + 1; k < *len; ++k) b[k] = std::max(b[k], a[k]);
+    combine_sum_max(static_cast<const double *>(in), static_cast<double *>(inout), *len);
   }
   // Created at the first use and kept for the process's life: MPI frees user operations at
   // MPI_Finalize, and a fix may be deleted after it (a Python driver's interpreter exit).
@@ -95,7 +91,7 @@ class LammpsOps : public DistributedOps {
   {
     static MPI_Op op = [] {
       MPI_Op o;
-      MPI_Op_create(&combine_sum_max, 1, &o);
+      MPI_Op_create(&combine, 1, &o);
       return o;
     }();
     return op;
