@@ -37,6 +37,9 @@ struct SolveReport {
 struct SolverTraits {
   bool distributed = true;        // runs with bodies spread over processes (DistributedOps)
   bool needs_owner_map = false;   // needs ContactProblem::owner (assembles the operator)
+  // stops at the tolerance: a solve it does not finish goes on from its multipliers (the
+  // host's kept overlaps, kept_overlaps.h, rely on that); false for the reference solver
+  bool iterative = true;
 };
 
 class Solver {

@@ -13,9 +13,12 @@ namespace {
 // (doc/performance.md 10.6, bench/run_friction_rest.sh: a tray under a sphere of 1000 x the
 // mass, at rest, 1869 -> 46 iterations per step and 23 -> 0 of 200 solves at maxiter; a
 // 968-sphere pile at rest 102 -> 47).
-// Without friction clearing stays: the packing can slide apart, and a frictionless tray under
-// a heavy sphere needs more iterations without it (27 -> 62 per step: rows at a target of 0
-// carry no force uniquely). A tenth: on the tray a hundredth still stalled (510 iterations
+// Without friction clearing stays for every row but those that pushed in the last step (the
+// warm start's force > 0), and only while that keeps solves short (kept_overlaps.h): keeping
+// every frictionless overlap, a frictionless tray under a heavy sphere needed more iterations
+// (27 -> 62 per step: rows at a target of 0 that do not push carry no force uniquely), and
+// keeping in every step stalls the solves of tight crystals (doc/performance.md 10.7-10.8).
+// A tenth: on the tray a hundredth still stalled (510 iterations
 // per step, a solve at maxiter), 0.3 and all of tol size gave the same iterations, and with
 // all of it curved walls, whose linearisation errs by (v h)^2 / (2 R) on top, went past tol
 // size in the drum (1.4e-4 at tol 1e-4; a tenth: 4.8e-5). What a tenth costs in accuracy: a
@@ -58,6 +61,12 @@ void Targets::apply(ContactProblem &p, int first_row) const
       const double kept =
           frictional ? tol * std::min(kKeptOverlap * p.size[c], p.size[c] - s) : 0.0;
       p.gap[c] = std::max(std::min(0.0, d + kept), -(h * recovery_speed + 2.0 * tol * s));
+      // a frictionless row that pushed keeps all of a shallow overlap: the paper's target is
+      // raised to 0, and the raise recorded, so that KeptOverlaps::undo can lower it again
+      if (!frictional && keeps(p, c, d)) {
+        kept_overlaps->raised(c, -p.gap[c]);
+        p.gap[c] = 0.0;
+      }
     }
     // a moving wall: g = D + h n . (u_wall - u_i), the gap to where the wall will be
     const int j = p.body_j[c];
@@ -76,6 +85,15 @@ void Targets::apply(ContactProblem &p, int first_row) const
     // no overlap
     p.gap[c] = std::min(geometric, 0.0) + h * wall_speed + h * e * v;
   }
+}
+
+bool Targets::keeps(const ContactProblem &p, int c, double d) const
+{
+  if (kept_overlaps == nullptr || !kept_overlaps->active() || warm == nullptr) return false;
+  const size_t at = static_cast<size_t>(block) * c;
+  if (at >= warm->size() || !((*warm)[at] > 0.0)) return false;    // did not push
+  const double s = std::min(p.size[c], p.h * speed_scale);
+  return -d <= tol * std::min(kKeptOverlap * p.size[c], p.size[c] - s);
 }
 
 }    // namespace hardcontact

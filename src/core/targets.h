@@ -6,6 +6,7 @@
 #pragma once
 
 #include "contact_problem.h"
+#include "kept_overlaps.h"
 
 namespace hardcontact {
 
@@ -20,8 +21,17 @@ struct Targets {
   const std::vector<Vec3> *u_start = nullptr;
   const std::vector<double> *restitution = nullptr;
   double bounce_vmin = 0.0;
+  // Kept overlaps (kept_overlaps.h), off while kept_overlaps is null or not active: the warm
+  // start multipliers of the rows (block per row; rows beyond it did not push), where a
+  // frictionless row that pushed (normal force > 0) keeps an overlap of up to kKeptOverlap tol
+  // size.
+  const std::vector<double> *warm = nullptr;
+  int block = 1;
+  KeptOverlaps *kept_overlaps = nullptr;
   // Rows first_row.. of p, added since the last call.
   void apply(ContactProblem &p, int first_row) const;
+  // Whether row c, overlapping by -d at q^n, keeps its overlap (kept_overlaps.h).
+  bool keeps(const ContactProblem &p, int c, double d) const;
 };
 
 }    // namespace hardcontact

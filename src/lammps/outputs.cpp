@@ -50,6 +50,7 @@ void Outputs::start_of_run(const ContactProblem &p, const WallGaps &walls,
   diag_[ITERATIONS] = diag_[CANDIDATES] = diag_[ACTIVE] = diag_[RESIDUAL] = 0.0;
   diag_[RHO] = diag_[ROUNDS] = diag_[CLEARING_WORK] = diag_[FRICTION_WORK] = 0.0;
   diag_[MAXITER_HITS] = static_cast<double>(maxiter_hits_);
+  diag_[KEPT_UNDONE] = static_cast<double>(kept_undone_);
   if (diag_[MAX_OVERLAP_RELATIVE] > tol && comm->me == 0)
     compat::warning(error, FLERR,
                     "Fix hardcontact: the run starts with overlapping spheres (largest "
@@ -90,6 +91,8 @@ void Outputs::record_solve(const StepResult &r, const SolverSettings &settings)
   diag_[RHO] = r.report.rho;
   diag_[ROUNDS] = r.rounds;
   diag_[MAXITER_HITS] = static_cast<double>(maxiter_hits_);
+  kept_undone_ += r.kept_undone;
+  diag_[KEPT_UNDONE] = static_cast<double>(kept_undone_);
 }
 
 void Outputs::end_of_run(const SolverSettings &settings)

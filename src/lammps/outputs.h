@@ -21,7 +21,7 @@ class Outputs : protected LAMMPS_NS::Pointers {
  public:
   // global vector, see compute_vector()
   enum { ITERATIONS, MAX_OVERLAP, CANDIDATES, ACTIVE, RESIDUAL, MAXITER_HITS,
-         MAX_OVERLAP_RELATIVE, RHO, ROUNDS, CLEARING_WORK, FRICTION_WORK, NVECTOR };
+         MAX_OVERLAP_RELATIVE, RHO, ROUNDS, CLEARING_WORK, FRICTION_WORK, KEPT_UNDONE, NVECTOR };
   // per atom: number of active contacts, contact force (3); with friction also the contact
   // torque (3)
   static constexpr int kPerAtomColumns = 4;
@@ -68,6 +68,7 @@ class Outputs : protected LAMMPS_NS::Pointers {
   double diag_[NVECTOR] = {};
   LAMMPS_NS::bigint maxiter_hits_ = 0;
   LAMMPS_NS::bigint maxiter_hits_run_ = 0;
+  LAMMPS_NS::bigint kept_undone_ = 0;    // solves whose kept overlaps were cleared again
   std::vector<Vec3> force_;     // contact force per owned atom
   std::vector<Vec3> torque_;    // contact torque per owned atom (friction)
   std::vector<Vec3> u_free_;    // u_free then w_free (friction): the dissipation's mean slip

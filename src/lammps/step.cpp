@@ -47,6 +47,16 @@ StepResult ContactStep::solve(Solver &solver, const SolverSettings &settings,
   sink.begin_candidates(1.0);
   offer_rows(bodies, sink);
   Targets targets{bodies.recovery_speed, free_speed_scale(problem_, ops_), settings.tol};
+  // Frictionless rows that pushed keep shallow overlaps while solves stay within a budget
+  // (core/kept_overlaps.h); the paper's clearing without a warm start or with friction, and
+  // for the reference solver
+  const bool keep = history && block_ == 1 && solver.traits().iterative &&
+                    settings.maxiter >= KeptOverlaps::kBudgetDivisor && kept_.begin_step();
+  if (keep) {
+    targets.kept_overlaps = &kept_;
+    targets.warm = &mu_;
+    targets.block = block_;
+  }
   // Cohesion: touching rows (D <= tol size) pull with their F, applied to u_free before the
   // solve (core/cohesion.h); rows added by later rounds are not touching.
   pull_any_ = effects.cohesion && !effects.cohesion->empty();
@@ -74,18 +84,44 @@ StepResult ContactStep::solve(Solver &solver, const SolverSettings &settings,
       if (effects.rolling) pair_values_of_rows(*effects.rolling, targeted, problem_.rolling);
       problem_.complete_frames(targeted);
     }
+    // Warm start: each row starts from the multiplier its pair had at the last step, if any
+    // (after the frames, which its tangential parts are projected on; before the targets,
+    // which read who pushed). Rows of later rounds start from 0.
+    if (targeted == 0) {
+      if (history) history->load(problem_, atom->tag, mu_);
+      else mu_.assign(static_cast<size_t>(block_) * problem_.n_contacts(), 0.0);
+    }
     targets.apply(problem_, targeted);
     targeted = problem_.n_contacts();
   };
   prepare_rows();
-  // Warm start: each row starts from the multiplier its pair had at the last step, if any.
-  if (history) history->load(problem_, atom->tag, mu_);
-  else mu_.assign(static_cast<size_t>(block_) * problem_.n_contacts(), 0.0);
+  // A budget only where some process kept an overlap: a step without any (a cold start, a
+  // scene in flight) is solved exactly as with the paper's targets. Later rounds add rows
+  // that did not push: they keep nothing.
+  bool budgeted = keep && ops_.sum_all(static_cast<double>(kept_.rows_raised())) > 0.0;
 
   StepResult result;
   for (;;) {
     if (targeted < problem_.n_contacts()) prepare_rows();
-    result.report = solver.solve(problem_, settings, ops_, mu_, u_);    // from the mu so far
+    if (budgeted) {
+      // a solve with kept overlaps within its budget; stopped there, it goes on from its
+      // multipliers with the paper's targets and the rest of maxiter (kept_overlaps.h)
+      SolverSettings within = settings;
+      within.maxiter = kept_.budget(settings.maxiter);
+      result.report = solver.solve(problem_, within, ops_, mu_, u_);
+      if (!result.report.converged) {
+        kept_.undo(problem_);
+        budgeted = false;
+        targets.kept_overlaps = nullptr;
+        result.iterations += result.report.iterations;
+        ++result.kept_undone;
+        SolverSettings rest = settings;
+        rest.maxiter = settings.maxiter - within.maxiter;
+        result.report = solver.solve(problem_, rest, ops_, mu_, u_);
+      }
+    } else {
+      result.report = solver.solve(problem_, settings, ops_, mu_, u_);    // from the mu so far
+    }
     result.iterations += result.report.iterations;
     ++result.rounds;
     // An unconverged solve is not refined further: its violations are reported, not chased.
@@ -130,6 +166,7 @@ double ContactStep::memory_usage() const
 {
   double bytes = (sizeof(int) * 2 + sizeof(double) * 6) * problem_.body_i.capacity();
   bytes += sizeof(double) * 7 * problem_.inv_mass.capacity();
+  bytes += kept_.memory_usage();
   return bytes;
 }
 

@@ -10,6 +10,7 @@
 #include "neighbor_reach.h"
 #include "sources/contact_source.h"
 
+#include "../core/kept_overlaps.h"
 #include "../core/plane_wall.h"
 #include "../core/solver.h"
 
@@ -25,6 +26,7 @@ struct StepResult {
   int iterations = 0;           // over all rounds
   int rounds = 0;
   double clearing_work = 0.0;   // over all processes (residual.h, clearing_work)
+  int kept_undone = 0;          // solves whose kept overlaps were cleared again (0 or 1)
 };
 
 // The opt-in effects of a step; each costs nothing when absent.
@@ -102,6 +104,7 @@ class ContactStep : protected LAMMPS_NS::Pointers {
   std::vector<double> force_;         // mu' - pull: the forces reported with cohesion
   bool pull_any_ = false;
   int block_ = 1;
+  KeptOverlaps kept_;                 // frictionless overlaps kept, and the back-off
   std::unordered_map<LAMMPS_NS::tagint, int> owner_index_;
 };
 

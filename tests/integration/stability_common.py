@@ -46,7 +46,8 @@ compute         P all reduce sum v_mvx v_mvy v_mvz v_mv v_mgz
 variable        sp atom sqrt(vx*vx+vy*vy+vz*vz)
 compute         vmax all reduce max v_sp
 thermo_style    custom step atoms c_ke c_P[1] c_P[2] c_P[3] c_P[4] c_P[5] c_vmax &
-                f_hc[1] f_hc[2] f_hc[3] f_hc[4] f_hc[5] f_hc[6] f_hc[7] f_hc[8] f_hc[9] f_hc[10]
+                f_hc[1] f_hc[2] f_hc[3] f_hc[4] f_hc[5] f_hc[6] f_hc[7] f_hc[8] f_hc[9] f_hc[10] &
+                f_hc[12]
 thermo_modify   norm no lost error format float %.16g
 thermo          {thermo}
 {dumps}
@@ -54,7 +55,7 @@ run             {nsteps}
 """
 
 THERMO_COLUMNS = ["Step", "Atoms", "c_ke", "c_P[1]", "c_P[2]", "c_P[3]", "c_P[4]", "c_P[5]", "c_vmax"] + \
-    ["f_hc[%d]" % k for k in range(1, 11)]
+    ["f_hc[%d]" % k for k in range(1, 11)] + ["f_hc[12]"]
 
 
 def deck(data, nsteps, h, skin, keywords="", dim=3, boundary="f f f", gravity=0.0,

@@ -9,8 +9,10 @@ section 2), tol 1e-4, h = 0.02. The same deck runs twice, `subspace 0` and `subs
 steps to come to rest, then a window of 60. Checked for the run with the subspace, at every
 step: the largest overlap f_ID[7] at most tol (it is an overlap relative to the contact
 size), no maxiter stop, the kinetic energy per sphere at rest below 1e-8 m g d in the window;
-and against the run without: the heavy sphere at the same height (1e-6 d; both are the scheme's
-answer to tol), and the mechanism at work: the window's mean iterations per step at most half
+and against the run without: the heavy sphere at the same height (both are the scheme's answer
+to tol: 1e-6 d, plus what kept overlaps allow, src/core/kept_overlaps.h: each of the two
+contacts in series under it, heavy-small and small-floor, may rest up to tol size / 10 deep,
+tol (5.5 + 0.5) / 10 = 6e-5 d; measured 1.1e-6 d with cg), and the mechanism at work: the window's mean iterations per step at most half
 (measured: cg 32 -> 2-4, apgd 48 -> 1.5 here, 880 -> 5-16 from bench/perf's rest state).
 `subspace 10` is cg's default without friction: cg also runs without the keyword, and must give
 the run with `subspace 10` step for step (iterations, height and kinetic energy to the bit). Run
@@ -21,6 +23,9 @@ import lammps_run as lr
 import physics_common as pc
 
 TOL = 1e-4
+# the heavy sphere's height: the solves' tolerance, plus the kept overlaps of the two contacts
+# in series under it (sizes 5.5 and 0.5, a tenth of tol size each)
+DZ_MAX = 1e-6 + TOL * (5.5 + 0.5) / 10
 SETTLE, WINDOW = 200, 60
 
 DECK = """
@@ -84,8 +89,8 @@ def test():
             on_cg = on
         check_run(on, solver)
         dz = abs(on["v_zh"][-1] - off["v_zh"][-1])
-        lr.check(dz <= 1e-6, "%s: heavy sphere at the same height with and without (|dz| = %.3g d)"
-                 % (solver, dz))
+        lr.check(dz <= DZ_MAX, "%s: heavy sphere at the same height with and without (|dz| = %.3g "
+                 "<= %.3g d)" % (solver, dz, DZ_MAX))
         w_on = sum(on["f_hc[1]"][SETTLE + 1:]) / WINDOW
         w_off = sum(off["f_hc[1]"][SETTLE + 1:]) / WINDOW
         lr.check(w_on <= 0.5 * w_off,

@@ -11,7 +11,7 @@ namespace hardcontact {
 
 class Exact : public Solver {
  public:
-  SolverTraits traits() const override { return {false, true}; }
+  SolverTraits traits() const override { return {false, true, false}; }
   SolveReport solve(const ContactProblem &p, const SolverSettings &s, DistributedOps &ops,
                     std::vector<double> &mu, std::vector<Vec3> &u) override;
 };

@@ -1,0 +1,68 @@
+// Frictionless rows that pushed in the last step keep a shallow overlap instead of clearing it,
+// while that keeps every solve short; the paper's clearing comes back for a step, and for the
+// steps after it, when it does not (doc/performance.md, section 10.8).
+//
+// Why: at rest a solve leaves gaps within tol s of 0 (residual.h), and clearing asks the next
+// step to undo them. Its warm start is then a few tol away (section 10.2), and a frictionless
+// pile, whose forces are ill-determined (10.1), pays hundreds of iterations every step for an
+// error it made itself. A row whose warm-start force is > 0 and whose overlap is at most
+// kKeptOverlap tol size (targets.cpp, as with friction) therefore gets the target 0: it may not
+// deepen, it need not clear (Targets::apply records the raise of its target here).
+//
+// Raising targets never makes eq. 15 infeasible (the cleared targets' solution still
+// satisfies it), but in a tight redundant loop (a row of spheres from wall to wall, a crystal)
+// the raised rows leave slack that some row of the loop must take up: the solution is then
+// nearly degenerate, and solvers stall on it (10.7: the crystals of the stability suite).
+// Cleared targets are the gaps of one configuration and have no such slack. So a solve with
+// kept overlaps gets a budget of iterations (budget()); a solve that stops at it is continued,
+// from its multipliers, with the cleared targets of the paper (undo()), and the next 1, 2, 4,
+// ... 256 steps clear from the start (begin_step()).
+#pragma once
+
+#include "contact_problem.h"
+
+#include <vector>
+
+namespace hardcontact {
+
+class KeptOverlaps {
+ public:
+  // Solves with kept overlaps stop after maxiter / kBudgetDivisor iterations (at least 1).
+  static constexpr int kBudgetDivisor = 10;
+  // The longest run of steps that clear after a solve stopped at its budget.
+  static constexpr int kMaxBackoff = 256;
+
+  // A new step: forgets the last step's rows; true when this step may keep overlaps (not
+  // within a back-off). The same on every process: it depends only on global verdicts.
+  bool begin_step();
+  // Whether the rows being targeted now may keep their overlaps (this step, before undo()).
+  bool active() const { return active_; }
+  // Target of row c raised by `by` (> 0) above the paper's (Targets::apply).
+  void raised(int c, double by)
+  {
+    rows_.push_back(c);
+    by_.push_back(by);
+  }
+  int budget(int maxiter) const
+  {
+    const int b = maxiter / kBudgetDivisor;
+    return b > 0 ? b : 1;
+  }
+  // The solve stopped at its budget: every raised row gets the paper's target again, rows
+  // targeted later this step clear, and the next steps clear (back-off, doubled each time).
+  void undo(ContactProblem &p);
+  // Solves that stopped at their budget and went on with cleared targets, since the start.
+  long undone() const { return undone_; }
+  int rows_raised() const { return static_cast<int>(rows_.size()); }
+  double memory_usage() const;
+
+ private:
+  std::vector<int> rows_;
+  std::vector<double> by_;
+  bool active_ = false;
+  int skip_ = 0;       // steps still to clear from the start
+  int backoff_ = 1;    // the next back-off's length
+  long undone_ = 0;
+};
+
+}    // namespace hardcontact

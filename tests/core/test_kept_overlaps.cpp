@@ -1,0 +1,141 @@
+// Kept overlaps (core/kept_overlaps.h, Targets::keeps): a frictionless row whose warm-start
+// force is > 0 and whose overlap is within tol x min(size / 10, size - s) gets the target 0;
+// rows that did not push, deeper rows, frictional rows and rows beyond the warm start are
+// targeted as by the paper's policy; undo() gives back exactly the paper's targets; after an
+// undo the next 1, 2, 4, ... 256 steps clear from the start.
+#include "kept_overlaps.h"
+#include "targets.h"
+
+#include "core_test_util.h"
+
+#include <gtest/gtest.h>
+
+using namespace hardcontact;
+
+namespace {
+
+constexpr double kTol = 1e-4;
+
+// Rows of size 1 on body 0 against a wall, with the given gaps.
+ContactProblem rows(const std::vector<double> &gaps)
+{
+  ContactProblem p = hctest::make_problem(0.01, {1.0}, {Vec3::Zero()});
+  for (const double d : gaps) p.add_contact(0, wall_body(0), Vec3(0, 0, -1), d, 1.0);
+  return p;
+}
+
+// V = 0.01: s = h V = 1e-4 of the size, tol s = 1e-8; at most tol size / 10 = 1e-5 is kept
+const std::vector<double> kGaps = {-5e-6, -5e-6, -3e-5, 2e-6, -1e-5, -5e-6};
+const std::vector<double> kWarm = {0.3, 0.0, 0.3, 0.3, 0.3};    // the last row: beyond it
+
+TEST(KeptOverlaps, RowsThatPushedKeepShallowOverlaps)
+{
+  KeptOverlaps kept;
+  ASSERT_TRUE(kept.begin_step());
+  Targets t{1.0, 0.01, kTol};
+  t.warm = &kWarm;
+  t.kept_overlaps = &kept;
+  ContactProblem p = rows(kGaps);
+  t.apply(p, 0);
+  EXPECT_DOUBLE_EQ(p.gap[0], 0.0);      // pushed, within tol size / 10: may not deepen
+  EXPECT_DOUBLE_EQ(p.gap[1], -5e-6);    // did not push: cleared
+  EXPECT_DOUBLE_EQ(p.gap[2], -3e-5);    // deeper than the tenth: cleared, all of it
+  EXPECT_DOUBLE_EQ(p.gap[3], 2e-6);     // open: eq. 15 unchanged
+  EXPECT_DOUBLE_EQ(p.gap[4], 0.0);      // exactly the tenth: kept
+  EXPECT_DOUBLE_EQ(p.gap[5], -5e-6);    // no warm start (a row of a later round): cleared
+  EXPECT_EQ(kept.rows_raised(), 2);
+}
+
+TEST(KeptOverlaps, UndoGivesThePapersTargets)
+{
+  KeptOverlaps kept;
+  kept.begin_step();
+  Targets t{1.0, 0.01, kTol};
+  t.warm = &kWarm;
+  t.kept_overlaps = &kept;
+  ContactProblem p = rows(kGaps);
+  t.apply(p, 0);
+  kept.undo(p);
+  ContactProblem q = rows(kGaps);
+  const Targets paper{1.0, 0.01, kTol};
+  paper.apply(q, 0);
+  for (int c = 0; c < p.n_contacts(); ++c) EXPECT_EQ(p.gap[c], q.gap[c]) << "row " << c;
+  EXPECT_FALSE(kept.active());
+  EXPECT_EQ(kept.undone(), 1);
+}
+
+TEST(KeptOverlaps, NothingIsKeptWhileInactiveOrWithoutAWarmStart)
+{
+  Targets t{1.0, 0.01, kTol};
+  KeptOverlaps kept;    // begin_step() not called: inactive
+  t.warm = &kWarm;
+  t.kept_overlaps = &kept;
+  ContactProblem p = rows(kGaps);
+  t.apply(p, 0);
+  EXPECT_DOUBLE_EQ(p.gap[0], -5e-6);
+  kept.begin_step();
+  t.warm = nullptr;
+  ContactProblem q = rows(kGaps);
+  t.apply(q, 0);
+  EXPECT_DOUBLE_EQ(q.gap[0], -5e-6);
+  EXPECT_EQ(kept.rows_raised(), 0);
+}
+
+TEST(KeptOverlaps, FrictionalRowsFollowTheirOwnPolicy)
+{
+  // with a coefficient > 0 the friction policy keeps the tenth whether the row pushed or not
+  // (targets.cpp) and records no raise: undo() does not touch it
+  KeptOverlaps kept;
+  kept.begin_step();
+  Targets t{1.0, 0.01, kTol};
+  const std::vector<double> warm = {0.0, 0.3};
+  t.warm = &warm;
+  t.kept_overlaps = &kept;
+  ContactProblem p = rows({-5e-6, -5e-6});
+  p.friction = {0.5, 0.0};
+  t.apply(p, 0);
+  EXPECT_DOUBLE_EQ(p.gap[0], 0.0);
+  EXPECT_DOUBLE_EQ(p.gap[1], 0.0);
+  EXPECT_EQ(kept.rows_raised(), 1);    // only the frictionless one
+}
+
+TEST(KeptOverlaps, LessIsKeptAsTheRowScaleNearsTheSize)
+{
+  // h V = 0.95 of the size: at most tol (size - s) = 5e-6 may be kept
+  KeptOverlaps kept;
+  kept.begin_step();
+  Targets t{1.0, 95.0, kTol};
+  const std::vector<double> warm = {0.3, 0.3};
+  t.warm = &warm;
+  t.kept_overlaps = &kept;
+  ContactProblem p = rows({-4e-6, -6e-6});
+  t.apply(p, 0);
+  EXPECT_DOUBLE_EQ(p.gap[0], 0.0);
+  EXPECT_DOUBLE_EQ(p.gap[1], -6e-6);
+}
+
+TEST(KeptOverlaps, BackOffDoublesUpTo256Steps)
+{
+  KeptOverlaps kept;
+  ContactProblem p = rows({});
+  std::vector<int> cleared;    // steps cleared from the start after each undo
+  for (int round = 0; round < 11; ++round) {
+    ASSERT_TRUE(kept.begin_step()) << "round " << round;
+    kept.undo(p);
+    int n = 0;
+    while (!kept.begin_step()) ++n;
+    cleared.push_back(n);
+  }
+  EXPECT_EQ(cleared, (std::vector<int>{1, 2, 4, 8, 16, 32, 64, 128, 256, 256, 256}));
+  EXPECT_EQ(kept.undone(), 11);
+}
+
+TEST(KeptOverlaps, BudgetIsATenthOfMaxiter)
+{
+  KeptOverlaps kept;
+  EXPECT_EQ(kept.budget(10000), 1000);
+  EXPECT_EQ(kept.budget(10), 1);
+  EXPECT_EQ(kept.budget(5), 1);
+}
+
+}    // namespace
