@@ -35,6 +35,18 @@ scenes.write(tray, sys.argv[1])
 print(tray["walls"])
 PYEOF
 }
+# bench_load1: the 1-minute load average, recorded beside each timed run
+bench_load1() { cut -d' ' -f1 /proc/loadavg; }
+# bench_restart_deck OUT LINES: a deck that reads the restart ${R} and goes on under gravity
+# with the fix (tol 1e-4, walls ${walls}), then LINES (thermo, computes, run ...)
+bench_restart_deck() {
+  {
+    printf '%s\n' 'read_restart    ${R}' 'neighbor        0.3 bin' \
+      'neigh_modify    delay 0 every 1 check yes' 'fix             grav all gravity 1.0 vector 0 0 -1' \
+      'fix             hc all hardcontact tol 1e-4 ${extra} ${walls}' 'timestep        0.02'
+    printf '%s\n' "$2"
+  } > "$1"
+}
 # bench_pile_deck OUT SED: bench/compare/in.pile3d with a slot ${extra} for more keywords of the
 # fix and a write_restart ${W} after its run, its thermo lines changed by the sed expression SED
 bench_pile_deck() {

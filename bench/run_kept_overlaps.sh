@@ -31,7 +31,6 @@ CALM=7000; CALM_CAP=240
 CSV="$RESULTS/kept_overlaps.csv"
 [ "$MODE" = quick ] && CSV="$WORK/kept_overlaps.csv"
 echo "scene,build,round,steps,it_mean,it_second_half,it_max,undone,overlap_rel_max,loop_s,load1" > "$CSV"
-load() { cut -d' ' -f1 /proc/loadavg; }
 # row LOG SCENE BUILD ROUND LOAD: thermo columns step ke f_hc[1] f_hc[7] f_hc[12] of the last
 # block of LOG, its first line (the state before the run) skipped
 row() {
@@ -48,27 +47,12 @@ bench_pile_deck "$WORK/in.pile" "$THERMO"
 bench_tray_settle_deck "$WORK/in.tray_settle" ""
 # the reference has 11 values (f_hc[12] is new): the decks ask for column 12 of the new build
 # only (the reference's runs repeat f_hc[1] there)
-cat > "$WORK/in.window" <<'EOF'
-read_restart    ${R}
-neighbor        0.3 bin
-neigh_modify    delay 0 every 1 check yes
-fix             grav all gravity 1.0 vector 0 0 -1
-fix             hc all hardcontact tol 1e-4 ${walls}
-timestep        0.02
-thermo_style    custom step ke f_hc[1] f_hc[7] ${undone}
+bench_restart_deck "$WORK/in.window" 'thermo_style    custom step ke f_hc[1] f_hc[7] ${undone}
 thermo_modify   norm no
 thermo          1
-run             ${n}
-EOF
+run             ${n}'
 # at rest for real: m g d of a sphere of the mean diameter 0.9 and density 1 is 0.3435
-cat > "$WORK/in.calm" <<'EOF'
-read_restart    ${R}
-neighbor        0.3 bin
-neigh_modify    delay 0 every 1 check yes
-fix             grav all gravity 1.0 vector 0 0 -1
-fix             hc all hardcontact tol 1e-4 ${walls}
-timestep        0.02
-compute         kin all ke
+bench_restart_deck "$WORK/in.calm" 'compute         kin all ke
 variable        calm equal c_kin/atoms/0.3435
 fix             calm all halt 10 v_calm < 1e-10 error soft message no
 variable        elapsed equal cpu
@@ -76,14 +60,13 @@ fix             cap all halt 10 v_elapsed > ${cap} error soft message no
 thermo_style    custom step ke f_hc[1] v_calm
 thermo          100
 run             ${n}
-write_restart   ${W}
-EOF
+write_restart   ${W}'
 : > "$WORK/states.txt"
 for nz in $LAYERS; do
   echo "kept_overlaps: the $nz-layer pile settled and run on to rest (at most $CALM steps, reference build)"
   (cd "$WORK" && "$REF" -in in.pile -var solver cg -var extra "" -var nz "$nz" -var undone "f_hc[1]" \
      -var n $((200 + 20 * nz)) -var W "settled$nz.restart" -log "log.settle_state$nz" -echo none > /dev/null)
-  (cd "$WORK" && "$REF" -in in.calm -var R "settled$nz.restart" -var walls "$PILE_WALLS" \
+  (cd "$WORK" && "$REF" -in in.calm -var R "settled$nz.restart" -var extra "" -var walls "$PILE_WALLS" \
      -var n "$CALM" -var cap "$CALM_CAP" -var W "rest$nz.restart" -log "log.calm_state$nz" -echo none > /dev/null)
   grep -B1 -m1 "^Loop" "$WORK/log.calm_state$nz" | head -1 | awk -v nz="$nz" \
     '{printf "state: %s layers at step %s, kinetic energy per sphere %s m g d\n", nz, $1, $4}' \
@@ -93,8 +76,8 @@ done
    -echo none > /dev/null)
 run_window() {    # LMP BUILD ROUND SCENE RESTART WALLS STEPS
   local undone="f_hc[1]"; [ "$2" = new ] && undone="f_hc[12]"
-  local l; l=$(load)
-  (cd "$WORK" && "$1" -in in.window -var R "$5" -var walls "$6" -var n "$7" -var undone "$undone" \
+  local l; l=$(bench_load1)
+  (cd "$WORK" && "$1" -in in.window -var R "$5" -var extra "" -var walls "$6" -var n "$7" -var undone "$undone" \
      -log "log.$4_$2_$3" -echo none > /dev/null)
   row "$WORK/log.$4_$2_$3" "$4" "$2" "$3" "$l"
 }
@@ -107,7 +90,7 @@ for r in $(seq 1 "$ROUNDS"); do
     done
     run_window "$lmp" "$build" "$r" tray tray.restart "$TRAY_WALLS" "$TRAY_WINDOW"
     undone="f_hc[1]"; [ "$build" = new ] && undone="f_hc[12]"
-    l=$(load)
+    l=$(bench_load1)
     (cd "$WORK" && "$lmp" -in in.pile -var solver cg -var extra "" -var nz 20 -var n "$SETTLE" -var undone "$undone" \
        -var W "settle_${build}_$r.restart" -log "log.settle_${build}_$r" -echo none > /dev/null)
     row "$WORK/log.settle_${build}_$r" settle "$build" "$r" "$l"

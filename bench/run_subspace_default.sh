@@ -20,7 +20,6 @@ ROUNDS=5; SETTLE=300; REST=2000; WINDOW=200; TRAY_WINDOW=500; NZ=20
 CSV="$RESULTS/subspace_default.csv"
 [ "$MODE" = quick ] && CSV="$WORK/subspace_default.csv"
 echo "scene,start,round,steps,it_mean,loop_s,load1" > "$CSV"
-load() { cut -d' ' -f1 /proc/loadavg; }
 # row LOG SCENE START ROUND LOAD: iterations (thermo column 3) of the last thermo block of LOG,
 # its first line (the state before the run) skipped, and its loop time
 row() {
@@ -32,18 +31,10 @@ row() {
 TRAY_WALLS=$(bench_tray_1000 "$WORK/tray_m1000.data")
 bench_pile_deck "$WORK/in.pile" 's/^thermo_style .*/thermo_style    custom step ke f_hc[1] f_hc[3] f_hc[4]/'
 bench_tray_settle_deck "$WORK/in.tray_settle" ""
-cat > "$WORK/in.window" <<'EOF'
-read_restart    ${R}
-neighbor        0.3 bin
-neigh_modify    delay 0 every 1 check yes
-fix             grav all gravity 1.0 vector 0 0 -1
-fix             hc all hardcontact tol 1e-4 ${extra} ${walls}
-timestep        0.02
-thermo_style    custom step ke f_hc[1] f_hc[3] f_hc[4]
+bench_restart_deck "$WORK/in.window" 'thermo_style    custom step ke f_hc[1] f_hc[3] f_hc[4]
 thermo_modify   norm no
 thermo          1
-run             ${n}
-EOF
+run             ${n}'
 echo "subspace_default: the pile to rest ($REST steps) and the tray (200 steps), default start"
 (cd "$WORK" && "$LMP" -in in.pile -var solver cg -var extra "" -var nz "$NZ" -var n "$REST" \
    -var W rest.restart -log log.rest_state -echo none > /dev/null)
@@ -54,15 +45,15 @@ for r in $(seq 1 "$ROUNDS"); do
     extra=""; [ "$start" = default ] || extra="$start"
     tag=${start// /}_$r
     echo "subspace_default: round $r, $start"
-    l=$(load)
+    l=$(bench_load1)
     (cd "$WORK" && "$LMP" -in in.pile -var solver cg -var extra "$extra" -var nz "$NZ" \
        -var n "$SETTLE" -var W settle_$tag.restart -log "log.settle_$tag" -echo none > /dev/null)
     row "$WORK/log.settle_$tag" settle "$start" "$r" "$l"
-    l=$(load)
+    l=$(bench_load1)
     (cd "$WORK" && "$LMP" -in in.window -var R rest.restart -var extra "$extra" \
        -var walls "$PILE_WALLS" -var n "$WINDOW" -log "log.rest_$tag" -echo none > /dev/null)
     row "$WORK/log.rest_$tag" rest "$start" "$r" "$l"
-    l=$(load)
+    l=$(bench_load1)
     (cd "$WORK" && "$LMP" -in in.window -var R tray.restart -var extra "$extra" \
        -var walls "$TRAY_WALLS" -var n "$TRAY_WINDOW" -log "log.tray_$tag" -echo none > /dev/null)
     row "$WORK/log.tray_$tag" tray "$start" "$r" "$l"
