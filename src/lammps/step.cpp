@@ -113,11 +113,12 @@ StepResult ContactStep::solve(Solver &solver, const SolverSettings &settings,
         kept_.undo(problem_);
         budgeted = false;
         targets.kept_overlaps = nullptr;
-        result.iterations += result.report.iterations;
         ++result.kept_undone;
+        const int spent = result.report.iterations;
         SolverSettings rest = settings;
         rest.maxiter = settings.maxiter - within.maxiter;
         result.report = solver.solve(problem_, rest, ops_, mu_, u_);
+        result.report.iterations += spent;    // the round's report covers both solves
       }
     } else {
       result.report = solver.solve(problem_, settings, ops_, mu_, u_);    // from the mu so far
