@@ -25,16 +25,25 @@ ContactProblem rows(const std::vector<double> &gaps)
 }
 
 // V = 0.01: s = h V = 1e-4 of the size, tol s = 1e-8; at most tol size / 10 = 1e-5 is kept
+// Targets with V = speed_scale that may keep overlaps of rows with a warm force > 0, recording
+// them in kept (begun: a step that may keep)
+Targets keeping(KeptOverlaps &kept, const std::vector<double> &warm, double speed_scale = 0.01)
+{
+  kept.begin_step();
+  Targets t{1.0, speed_scale, kTol};
+  t.warm = &warm;
+  t.kept_overlaps = &kept;
+  return t;
+}
+
 const std::vector<double> kGaps = {-5e-6, -5e-6, -3e-5, 2e-6, -1e-5, -5e-6};
 const std::vector<double> kWarm = {0.3, 0.0, 0.3, 0.3, 0.3};    // the last row: beyond it
 
 TEST(KeptOverlaps, RowsThatPushedKeepShallowOverlaps)
 {
   KeptOverlaps kept;
-  ASSERT_TRUE(kept.begin_step());
-  Targets t{1.0, 0.01, kTol};
-  t.warm = &kWarm;
-  t.kept_overlaps = &kept;
+  const Targets t = keeping(kept, kWarm);
+  ASSERT_TRUE(kept.active());
   ContactProblem p = rows(kGaps);
   t.apply(p, 0);
   EXPECT_DOUBLE_EQ(p.gap[0], 0.0);      // pushed, within tol size / 10: may not deepen
@@ -49,10 +58,7 @@ TEST(KeptOverlaps, RowsThatPushedKeepShallowOverlaps)
 TEST(KeptOverlaps, UndoGivesThePapersTargets)
 {
   KeptOverlaps kept;
-  kept.begin_step();
-  Targets t{1.0, 0.01, kTol};
-  t.warm = &kWarm;
-  t.kept_overlaps = &kept;
+  const Targets t = keeping(kept, kWarm);
   ContactProblem p = rows(kGaps);
   t.apply(p, 0);
   kept.undo(p);
@@ -86,11 +92,8 @@ TEST(KeptOverlaps, FrictionalRowsFollowTheirOwnPolicy)
   // with a coefficient > 0 the friction policy keeps the tenth whether the row pushed or not
   // (targets.cpp) and records no raise: undo() does not touch it
   KeptOverlaps kept;
-  kept.begin_step();
-  Targets t{1.0, 0.01, kTol};
   const std::vector<double> warm = {0.0, 0.3};
-  t.warm = &warm;
-  t.kept_overlaps = &kept;
+  const Targets t = keeping(kept, warm);
   ContactProblem p = rows({-5e-6, -5e-6});
   p.friction = {0.5, 0.0};
   t.apply(p, 0);
@@ -103,11 +106,8 @@ TEST(KeptOverlaps, LessIsKeptAsTheRowScaleNearsTheSize)
 {
   // h V = 0.95 of the size: at most tol (size - s) = 5e-6 may be kept
   KeptOverlaps kept;
-  kept.begin_step();
-  Targets t{1.0, 95.0, kTol};
   const std::vector<double> warm = {0.3, 0.3};
-  t.warm = &warm;
-  t.kept_overlaps = &kept;
+  const Targets t = keeping(kept, warm, 95.0);
   ContactProblem p = rows({-4e-6, -6e-6});
   t.apply(p, 0);
   EXPECT_DOUBLE_EQ(p.gap[0], 0.0);
