@@ -55,15 +55,16 @@ void Targets::apply(ContactProblem &p, int first_row) const
     if (d < 0.0) {
       // the row scale without its round-off floor: at rest with no force nothing may move
       const double s = std::min(p.size[c], h * speed_scale);
-      // a frictional row keeps an overlap of up to kKeptOverlap tol size, and never more than
-      // tol (size - s): with the solve's own tol s on top, at most tol size is left (f_ID[7])
+      // what may be kept: up to kKeptOverlap tol size, and never more than tol (size - s):
+      // with the solve's own tol s on top, at most tol size is left (f_ID[7])
+      const double shallow = tol * std::min(kKeptOverlap * p.size[c], p.size[c] - s);
+      // a frictional row keeps that much of any overlap
       const bool frictional = !p.friction.empty() && p.friction[c] > 0.0;
-      const double kept =
-          frictional ? tol * std::min(kKeptOverlap * p.size[c], p.size[c] - s) : 0.0;
-      p.gap[c] = std::max(std::min(0.0, d + kept), -(h * recovery_speed + 2.0 * tol * s));
+      p.gap[c] = std::max(std::min(0.0, d + (frictional ? shallow : 0.0)),
+                          -(h * recovery_speed + 2.0 * tol * s));
       // a frictionless row that pushed keeps all of a shallow overlap: the paper's target is
       // raised to 0, and the raise recorded, so that KeptOverlaps::undo can lower it again
-      if (!frictional && keeps(p, c, d)) {
+      if (!frictional && -d <= shallow && pushed(c)) {
         kept_overlaps->raised(c, -p.gap[c]);
         p.gap[c] = 0.0;
       }
@@ -87,13 +88,11 @@ void Targets::apply(ContactProblem &p, int first_row) const
   }
 }
 
-bool Targets::keeps(const ContactProblem &p, int c, double d) const
+bool Targets::pushed(int c) const
 {
   if (kept_overlaps == nullptr || !kept_overlaps->active() || warm == nullptr) return false;
   const size_t at = static_cast<size_t>(block) * c;
-  if (at >= warm->size() || !((*warm)[at] > 0.0)) return false;    // did not push
-  const double s = std::min(p.size[c], p.h * speed_scale);
-  return -d <= tol * std::min(kKeptOverlap * p.size[c], p.size[c] - s);
+  return at < warm->size() && (*warm)[at] > 0.0;
 }
 
 }    // namespace hardcontact

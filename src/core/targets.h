@@ -30,8 +30,9 @@ struct Targets {
   KeptOverlaps *kept_overlaps = nullptr;
   // Rows first_row.. of p, added since the last call.
   void apply(ContactProblem &p, int first_row) const;
-  // Whether row c, overlapping by -d at q^n, keeps its overlap (kept_overlaps.h).
-  bool keeps(const ContactProblem &p, int c, double d) const;
+  // Whether row c may keep its overlap because it pushed in the last step (its warm normal
+  // force > 0) while kept overlaps are active (kept_overlaps.h).
+  bool pushed(int c) const;
 };
 
 }    // namespace hardcontact

@@ -111,8 +111,7 @@ StepResult ContactStep::solve(Solver &solver, const SolverSettings &settings,
       result.report = solver.solve(problem_, within, ops_, mu_, u_);
       if (!result.report.converged) {
         kept_.undo(problem_);
-        budgeted = false;
-        targets.kept_overlaps = nullptr;
+        budgeted = false;    // undo() ended the keeping: later rounds' rows clear
         ++result.kept_undone;
         const int spent = result.report.iterations;
         SolverSettings rest = settings;
