@@ -232,36 +232,6 @@ struct RowKernel {
   const double *normal, *inv_mass;
 };
 
-// RowKernel for a vector with one slot more, held at 0 (DualOperator::impulse_velocities_with):
-// a wall row's j is that slot, and a body a row may not push (not owned, or the wall) has the
-// weight 0, so neither pass tests the row's kind. The operations and their order are
-// RowKernel's (0 - u_i at a wall; adding 0 leaves a ghost's velocity as it was).
-struct ImpulseKernel {
-  double normal_speed(int c, const double *u) const
-  {
-    const double *n = normal + 3 * c, *ui = u + 3 * body_i[c], *uj = u + 3 * jz[c];
-    return (n[0] * (uj[0] - ui[0]) + n[1] * (uj[1] - ui[1])) + n[2] * (uj[2] - ui[2]);
-  }
-  void apply(int c, double dmu, double *u) const
-  {
-    const double t = h * dmu;
-    const double *n = normal + 3 * c;
-    const double x = t * n[0], y = t * n[1], z = t * n[2];
-    const double mi = wi[c], mj = wj[c];
-    double *vi = u + 3 * body_i[c], *vj = u + 3 * jz[c];
-    vi[0] -= mi * x;
-    vi[1] -= mi * y;
-    vi[2] -= mi * z;
-    vj[0] += mj * x;
-    vj[1] += mj * y;
-    vj[2] += mj * z;
-  }
-
-  double h;
-  const int *body_i, *jz;
-  const double *normal, *wi, *wj;
-};
-
 inline double ContactProblem::normal_speed(int c, const std::vector<Vec3> &u) const
 {
   return RowKernel(*this).normal_speed(c, doubles(u));

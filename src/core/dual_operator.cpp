@@ -26,22 +26,6 @@ void DualOperator::count_degrees(const std::vector<int> &rows)
   ops_->forward(arm2_.data(), 1);
 }
 
-void DualOperator::pack()
-{
-  const ContactProblem &p = *p_;
-  const int nc = p.n_contacts();
-  jz_.resize(nc);
-  wi_.resize(nc);
-  wj_.resize(nc);
-  for (int c = 0; c < nc; ++c) {
-    const int i = p.body_i[c], j = p.body_j[c];
-    jz_[c] = is_wall(j) ? p.n_dof() : j;
-    wi_[c] = i < p.n_owned ? p.inv_mass[i] : 0.0;
-    wj_[c] = j >= 0 && j < p.n_owned ? p.inv_mass[j] : 0.0;
-  }
-  packed_ = true;
-}
-
 Eigen::SparseMatrix<double> DualOperator::assembled() const
 {
   const ContactProblem &p = *p_;

@@ -22,7 +22,6 @@ class DualOperator {
     p_ = &p;
     ops_ = &ops;
     if (!p.friction.empty()) shift_.assign(p.n_contacts(), 0.0);
-    packed_ = false;
   }
   const ContactProblem &problem() const { return *p_; }
   DistributedOps &ops() const { return *ops_; }
@@ -71,20 +70,17 @@ class DualOperator {
     forward(u);
   }
   // w = h M^-1 G^T m over the listed rows, from rest (no u_free): the velocity change of the
-  // impulses m alone, so that h G_c w is A m (Krylov solvers; impulse_speed gives it). Ghosts
-  // from their owners. w gets one slot more than a velocity vector, held at 0: the wall of
-  // every wall row (ImpulseKernel). moved: when given, the owned bodies the rows touch, and w
-  // must be 0 on every other owned body (the caller zeroed it once): only these are cleared,
-  // so a product costs the rows and their bodies, not every body (a bed forming under a
-  // million falling spheres).
+  // impulses m alone, so that h G_c w is A m (Krylov solvers). Ghosts from their owners.
+  // moved: when given, the owned bodies the rows touch, and w must be 0 on every other owned
+  // body (the caller zeroed it once): only these are cleared, so a product costs the rows and
+  // their bodies, not every body (a bed forming under a million falling spheres).
   template <class MOf>
   void impulse_velocities_with(const std::vector<int> &rows, MOf &&m_of, std::vector<Vec3> &w,
-                               const std::vector<int> *moved = nullptr)
+                               const std::vector<int> *moved = nullptr) const
   {
     const ContactProblem &p = *p_;
+    w.resize(p.n_dof());
     const int nb = p.n_bodies();
-    w.resize(p.n_dof() + 1);
-    w.back() = Vec3::Zero();
     if (moved == nullptr) {
       std::fill(w.begin(), w.begin() + p.n_owned, Vec3::Zero());
       if (p.rotates()) std::fill(w.begin() + nb, w.begin() + nb + p.n_owned, Vec3::Zero());
@@ -93,21 +89,13 @@ class DualOperator {
       if (p.rotates())
         for (const int b : *moved) w[nb + b] = Vec3::Zero();
     }
-    const ImpulseKernel k = impulse_kernel();
+    const RowKernel k(p);
     double *v = doubles(w);
     for (const int c : rows) {
       const double m = m_of(c);
       if (m != 0.0) k.apply(c, m, v);
     }
     forward(w);
-  }
-  // The kernel of impulse_velocities_with, for a solver's own loops over its w: h G_c w is
-  // h * normal_speed(c, doubles(w)), (A m)_c. Its arrays are made once per bind.
-  ImpulseKernel impulse_kernel()
-  {
-    if (!packed_) pack();
-    return ImpulseKernel{p_->h, p_->body_i.data(), jz_.data(), doubles(p_->normal), wi_.data(),
-                         wj_.data()};
   }
   // u = u_free (mu = 0).
   void free_velocities(std::vector<Vec3> &u) const
@@ -287,7 +275,7 @@ class DualOperator {
 
   // The normal target shift of each row (friction, laws/coulomb.h): 0 after bind().
   std::vector<double> &shift() { return shift_; }
-  double memory_usage() const { return bytes_of(deg_, arm2_, shift_, jz_, wi_, wj_); }
+  double memory_usage() const { return bytes_of(deg_, arm2_, shift_); }
   double shift(int c) const { return shift_[c]; }
 
  private:
@@ -316,14 +304,8 @@ class DualOperator {
     return p.inv_mass[b] + (p.rotates() ? p.inv_inertia[b] * arm2_[b] : 0.0);
   }
 
-  // ImpulseKernel's arrays for the bound problem (dual_operator.cpp)
-  void pack();
-
   const ContactProblem *p_ = nullptr;
   DistributedOps *ops_ = nullptr;
-  bool packed_ = false;
-  std::vector<int> jz_;          // per row: body j, or the slot of 0 (n_dof()) for a wall
-  std::vector<double> wi_, wj_;  // per row: 1/m of bodies i and j, 0 where not owned / a wall
   std::vector<double> deg_;      // per body, from count_degrees()
   std::vector<double> arm2_;     // per body, the longest arm squared (friction), ditto
   std::vector<double> shift_;    // per row, friction only

@@ -39,7 +39,7 @@ void ProjectedCg::start(const SolverSettings &s, std::vector<double> &mu, std::v
   near_mark_.assign(nc, 0);
   body_mark_.assign(p.n_owned, 0);
   wc_.assign(p.n_dof(), Vec3::Zero());
-  w_.assign(p.n_dof() + 1, Vec3::Zero());    // products clear only the bodies of set rows (moved_)
+  w_.assign(p.n_dof(), Vec3::Zero());    // products clear only the bodies of set rows (moved_)
   // u = u(m) and the gaps g on the set rows
   const auto regap = [&](const std::vector<double> &m, std::vector<double> &g,
                          std::vector<Vec3> &v) {
@@ -153,7 +153,7 @@ double ProjectedCg::product(const std::vector<double> &mu, double gamma)
         return dir[c];
       },
       w_, &moved_);
-  const ImpulseKernel k = op_.impulse_kernel();
+  const RowKernel k(p);
   const double *w = doubles(w_);
   const char *counted = p.counted.data();
   double gd = 0.0, dq = 0.0;
