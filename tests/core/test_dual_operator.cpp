@@ -9,6 +9,7 @@
 
 #include <gtest/gtest.h>
 
+#include <numeric>
 #include <random>
 
 using namespace hardcontact;
@@ -20,7 +21,7 @@ std::vector<double> product(DualOperator &op, const std::vector<double> &m, std:
 {
   const ContactProblem &p = op.problem();
   std::vector<int> rows(p.n_contacts());
-  for (int c = 0; c < p.n_contacts(); ++c) rows[c] = c;
+  std::iota(rows.begin(), rows.end(), 0);
   op.impulse_velocities_with(rows, [&](int c) { return m[c]; }, w);
   std::vector<double> am(p.n_contacts());
   for (int c = 0; c < p.n_contacts(); ++c) am[c] = p.h * p.normal_speed(c, w);
@@ -44,9 +45,9 @@ TEST(DualOperator, ImpulseProductIsTheAssembledOperator)
 
     std::mt19937 gen(seed);
     std::uniform_real_distribution<double> U(-1.0, 1.0);
-    Eigen::VectorXd m(p.n_contacts());
     std::vector<double> mv(p.n_contacts());
-    for (int c = 0; c < p.n_contacts(); ++c) mv[c] = m[c] = c % 5 == 0 ? 0.0 : U(gen);
+    for (int c = 0; c < p.n_contacts(); ++c) mv[c] = c % 5 == 0 ? 0.0 : U(gen);
+    const Eigen::Map<const Eigen::VectorXd> m(mv.data(), p.n_contacts());
 
     SerialOps ops;
     DualOperator op;
