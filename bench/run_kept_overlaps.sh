@@ -19,6 +19,8 @@
 # build only), the largest overlap / size over the window (f_hc[7]), the loop time and the
 # 1-minute load before the run. Writes bench/results/kept_overlaps.csv and
 # kept_overlaps_run.txt (doc/performance.md section 10.8).
+# KEPT_OVERLAPS_NAME (default kept_overlaps) names the two result files, so that a later change
+# to the kept overlaps (the budget that follows cleared steps, 10.10) is recorded beside them.
 #   HARDCONTACT_REF_LMP=/path/lmp_hardcontact bench/run_kept_overlaps.sh [--quick]
 set -euo pipefail
 # shellcheck source=common.sh
@@ -28,8 +30,9 @@ ROUNDS=3; SETTLE=300; WINDOW=200; TRAY_WINDOW=500; LAYERS="5 10 20"
 [ "$MODE" = quick ] && { ROUNDS=1; SETTLE=60; WINDOW=20; TRAY_WINDOW=40; LAYERS="5"; }
 CALM=7000; CALM_CAP=240
 [ "$MODE" = quick ] && { CALM=200; CALM_CAP=30; }
-CSV="$RESULTS/kept_overlaps.csv"
-[ "$MODE" = quick ] && CSV="$WORK/kept_overlaps.csv"
+NAME="${KEPT_OVERLAPS_NAME:-kept_overlaps}"
+CSV="$RESULTS/$NAME.csv"
+[ "$MODE" = quick ] && CSV="$WORK/$NAME.csv"
 echo "scene,build,round,steps,it_mean,it_second_half,it_max,undone,overlap_rel_max,loop_s,load1" > "$CSV"
 # row LOG SCENE BUILD ROUND LOAD: thermo columns step ke f_hc[1] f_hc[7] f_hc[12] of the last
 # block of LOG, its first line (the state before the run) skipped
@@ -126,4 +129,4 @@ for scene in scenes:
              " ".join("%.3f" % t for t in t_ref), " ".join("%.3f" % t for t in t_new)))
 PYEOF
 } | tee "$WORK/summary.txt"
-[ "$MODE" = quick ] || cp "$WORK/summary.txt" "$RESULTS/kept_overlaps_run.txt"
+[ "$MODE" = quick ] || cp "$WORK/summary.txt" "$RESULTS/${NAME}_run.txt"

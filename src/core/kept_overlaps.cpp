@@ -2,6 +2,8 @@
 
 #include "container_bytes.h"
 
+#include <algorithm>
+
 namespace hardcontact {
 
 bool KeptOverlaps::begin_step()
@@ -24,6 +26,18 @@ void KeptOverlaps::undo(ContactProblem &p)
   ++undone_;
   skip_ = backoff_;
   backoff_ = backoff_ < kMaxBackoff ? 2 * backoff_ : kMaxBackoff;
+}
+
+int KeptOverlaps::budget(int maxiter) const
+{
+  int b = maxiter / kBudgetDivisor;
+  if (cleared_iterations_ >= 0) {
+    // in long arithmetic: factor x iterations may pass INT_MAX when maxiter is huge
+    const long follow = std::max(static_cast<long>(kMinBudget),
+                                 static_cast<long>(kBudgetFactor) * cleared_iterations_);
+    if (follow < b) b = static_cast<int>(follow);
+  }
+  return b > 0 ? b : 1;
 }
 
 double KeptOverlaps::memory_usage() const { return bytes_of(rows_, by_); }

@@ -50,8 +50,9 @@ StepResult ContactStep::solve(Solver &solver, const SolverSettings &settings,
   // Frictionless rows that pushed keep shallow overlaps while solves stay within a budget
   // (core/kept_overlaps.h); the paper's clearing without a warm start or with friction, and
   // for the reference solver
-  const bool keep = history && block_ == 1 && solver.traits().iterative &&
-                    settings.maxiter >= KeptOverlaps::kBudgetDivisor && kept_.begin_step();
+  const bool may_keep = history && block_ == 1 && solver.traits().iterative &&
+                        settings.maxiter >= KeptOverlaps::kBudgetDivisor;
+  const bool keep = may_keep && kept_.begin_step();
   if (keep) {
     targets.kept_overlaps = &kept_;
     targets.warm = &mu_;
@@ -99,6 +100,7 @@ StepResult ContactStep::solve(Solver &solver, const SolverSettings &settings,
   // scene in flight) is solved exactly as with the paper's targets. Later rounds add rows
   // that did not push: they keep nothing.
   bool budgeted = keep && ops_.sum_all(static_cast<double>(kept_.rows_raised())) > 0.0;
+  const bool cleared_from_start = may_keep && !budgeted;
 
   StepResult result;
   for (;;) {
@@ -135,6 +137,8 @@ StepResult ContactStep::solve(Solver &solver, const SolverSettings &settings,
       break;
     }
   }
+  // what clearing costs now sets the next budgets (kept_overlaps.h)
+  if (cleared_from_start) kept_.cleared(result.iterations);
   if (history) history->store(problem_, atom->tag, mu_);    // mu': the solver's variable
   if (pull_any_) {
     const int nc = problem_.n_contacts();

@@ -2,7 +2,8 @@
 // force is > 0 and whose overlap is within tol x min(size / 10, size - s) gets the target 0;
 // rows that did not push, deeper rows, frictional rows and rows beyond the warm start are
 // targeted as by the paper's policy; undo() gives back exactly the paper's targets; after an
-// undo the next 1, 2, 4, ... 256 steps clear from the start.
+// undo the next 1, 2, 4, ... 256 steps clear from the start; the budget follows the cleared
+// steps' iterations.
 #include "kept_overlaps.h"
 #include "targets.h"
 
@@ -130,12 +131,30 @@ TEST(KeptOverlaps, BackOffDoublesUpTo256Steps)
   EXPECT_EQ(kept.undone(), 11);
 }
 
-TEST(KeptOverlaps, BudgetIsATenthOfMaxiter)
+TEST(KeptOverlaps, BudgetIsATenthOfMaxiterBeforeAnyClearedStep)
 {
   KeptOverlaps kept;
   EXPECT_EQ(kept.budget(10000), 1000);
   EXPECT_EQ(kept.budget(10), 1);
   EXPECT_EQ(kept.budget(5), 1);
+}
+
+TEST(KeptOverlaps, BudgetFollowsWhatClearingCosts)
+{
+  KeptOverlaps kept;
+  kept.cleared(40);    // 4 x 40
+  EXPECT_EQ(kept.budget(10000), 160);
+  EXPECT_EQ(kept.budget(1000), 100);    // never above a tenth of maxiter
+  EXPECT_EQ(kept.budget(5), 1);
+  kept.cleared(3);    // the recent largest, halved: 20, and 4 x 20 = 80
+  EXPECT_EQ(kept.budget(10000), 80);
+  kept.cleared(0);    // 10: 40, below the floor
+  EXPECT_EQ(kept.budget(10000), KeptOverlaps::kMinBudget);
+  kept.cleared(600);    // a costlier step raises it at once: 2400
+  EXPECT_EQ(kept.budget(100000), 2400);
+  EXPECT_EQ(kept.budget(10000), 1000);
+  kept.cleared(2000000000);    // 4 x that does not overflow
+  EXPECT_EQ(kept.budget(2000000000), 200000000);
 }
 
 }    // namespace

@@ -33,9 +33,9 @@ Asserted after settling (d = 2 r, L = rows or layers):
   feasibility: f_hc[7] <= tol at every step; no solve stopped at maxiter; no lost atom.
 The rows from wall to wall make these crystals the hard case of kept overlaps (without
 friction, warm solvers: src/core/kept_overlaps.h): a kept overlap leaves a slack in a tight
-loop and solves stall on it, so such a solve goes on with cleared targets after maxiter / 10
-iterations; the checks above hold for the result, and MEASURED reports how many solves did
-(kept_undone, f_hc[12]).
+loop and solves stall on it, so such a solve goes on with cleared targets after its budget of
+iterations (4 x what recent cleared steps took, 50 to maxiter / 10); the checks above hold for
+the result, and MEASURED reports how many solves did (kept_undone, f_hc[12]).
 On 2 ranks (np 2 registration): the same checks, and the final positions compared with a serial
 apgd_cold run of the same data file (within L tol d)."""
 
