@@ -37,7 +37,7 @@ namespace hardcontact {
 class KeptOverlaps {
  public:
   // Solves with kept overlaps stop after maxiter / kBudgetDivisor iterations (at least 1), or
-  // earlier: kBudgetFactor x the last cleared step's iterations, at least kMinBudget.
+  // earlier: kBudgetFactor x what recent cleared steps took (cleared()), at least kMinBudget.
   static constexpr int kBudgetDivisor = 10;
   static constexpr int kBudgetFactor = 4;
   static constexpr int kMinBudget = 50;
@@ -58,9 +58,8 @@ class KeptOverlaps {
   int budget(int maxiter) const;
   // A step that could have kept overlaps was solved with the paper's targets from the start (a
   // back-off, or no row to keep) in `iterations` (the same on every process): what clearing
-  // costs now, the measure of the next budgets.
-  // A step solved in 0 iterations says little of the next: the measure is the largest of the
-  // recent ones, halved at each step that took fewer.
+  // costs now, the measure of the next budgets. One step solved in 0 iterations says little of
+  // the next, so the measure is the largest recent count, halved at each step that took fewer.
   void cleared(int iterations)
   {
     cleared_iterations_ = std::max(iterations, cleared_iterations_ / 2);
