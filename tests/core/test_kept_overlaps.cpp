@@ -146,9 +146,9 @@ TEST(KeptOverlaps, BudgetFollowsWhatClearingCosts)
   EXPECT_EQ(kept.budget(10000), 160);
   EXPECT_EQ(kept.budget(1000), 100);    // never above a tenth of maxiter
   EXPECT_EQ(kept.budget(5), 1);
-  kept.cleared(3);    // the recent largest, halved: 20, and 4 x 20 = 80
+  kept.cleared(3);    // the measure halves to 20 (more than 3): 4 x 20 = 80
   EXPECT_EQ(kept.budget(10000), 80);
-  kept.cleared(0);    // 10: 40, below the floor
+  kept.cleared(0);    // it halves to 10: 4 x 10 = 40, below the floor
   EXPECT_EQ(kept.budget(10000), KeptOverlaps::kMinBudget);
   kept.cleared(600);    // a costlier step raises it at once: 2400
   EXPECT_EQ(kept.budget(100000), 2400);
