@@ -3,6 +3,7 @@
 #include "container_bytes.h"
 
 #include <algorithm>
+#include <limits>
 
 namespace hardcontact {
 
@@ -38,6 +39,24 @@ int KeptOverlaps::budget(int maxiter) const
     if (follow < b) b = static_cast<int>(follow);
   }
   return b > 0 ? b : 1;
+}
+
+void KeptOverlaps::save_state(double *out) const
+{
+  out[0] = skip_;
+  out[1] = backoff_;
+  out[2] = cleared_iterations_;
+}
+
+void KeptOverlaps::load_state(const double *in)
+{
+  // doubles from a file: clamped (and NaN read as the fresh state) rather than trusted
+  const auto within = [](double v, int lo, int hi, int fresh) {
+    return v >= lo && v <= hi ? static_cast<int>(v) : fresh;
+  };
+  skip_ = within(in[0], 0, kMaxBackoff, 0);
+  backoff_ = within(in[1], 1, kMaxBackoff, 1);
+  cleared_iterations_ = within(in[2], -1, std::numeric_limits<int>::max(), -1);
 }
 
 double KeptOverlaps::memory_usage() const { return bytes_of(rows_, by_); }

@@ -69,6 +69,13 @@ class KeptOverlaps {
   void undo(ContactProblem &p);
   // Solves that stopped at their budget and went on with cleared targets, since the start.
   long undone() const { return undone_; }
+  // What decides the coming steps (the back-off under way, its next length, the budget's
+  // measure), as kStateSize doubles for a host's restart file: a run split by write_restart /
+  // read_restart then keeps and clears in the same steps as the unsplit run. undone() is not
+  // part of it (it counts since the fix was defined). load_state() clamps to valid values.
+  static constexpr int kStateSize = 3;
+  void save_state(double *out) const;
+  void load_state(const double *in);
   int rows_raised() const { return static_cast<int>(rows_.size()); }
   double memory_usage() const;
 

@@ -4,6 +4,7 @@
 #include "fix_hardcontact.h"
 
 #include <cstdlib>
+#include <cstring>
 #include <string>
 
 #include "atom.h"
@@ -108,8 +109,10 @@ FixHardContact::FixHardContact(LAMMPS *lmp, int narg, char **arg) :
   comm_forward = hardcontact::LammpsOps::kMaxPerBody;
   ops_.attach(this, comm, error, world);
 
-  // per-atom data (outputs, contact history) travels with atoms and restart files
+  // per-atom data (outputs, contact history) travels with atoms and restart files, and the
+  // kept overlaps' back-off and budget (core/kept_overlaps.h) with the fix's global state
   restart_peratom = 1;
+  restart_global = 1;
   create_attribute = 1;    // atoms created during the run (fix pour) start with no history
   array_atom = nullptr;
   array_local = nullptr;
@@ -295,6 +298,37 @@ int FixHardContact::unpack_exchange(int nlocal, double *buf)
   const int n = outputs_.per_atom_columns();
   for (int k = 0; k < n; ++k) array_atom[nlocal][k] = buf[k];
   return n + history_.unpack(nlocal, buf + n);
+}
+
+// The global state: a format tag, then the kept overlaps' state (core/kept_overlaps.h), so
+// that a split run keeps and clears overlaps in the same steps as the unsplit one. LAMMPS
+// calls this on every process; only the first writes (the others have no file).
+namespace {
+constexpr double kGlobalStateFormat = 1.0;
+}
+
+void FixHardContact::write_restart(FILE *fp)
+{
+  double list[1 + hardcontact::KeptOverlaps::kStateSize];
+  list[0] = kGlobalStateFormat;
+  step_.kept_overlaps().save_state(list + 1);
+  if (comm->me == 0) {
+    const int size = static_cast<int>(sizeof(list));
+    fwrite(&size, sizeof(int), 1, fp);
+    fwrite(list, sizeof(double), 1 + hardcontact::KeptOverlaps::kStateSize, fp);
+  }
+}
+
+// Every process receives the same bytes. A state of another format (a later build's) is
+// ignored: the run then starts with a fresh back-off and budget, as before restart files held
+// them.
+void FixHardContact::restart(char *buf)
+{
+  double list[1 + hardcontact::KeptOverlaps::kStateSize];
+  std::memcpy(list, buf, sizeof(double));    // the tag first: another format may be shorter
+  if (list[0] != kGlobalStateFormat) return;
+  std::memcpy(list, buf, sizeof(list));
+  step_.kept_overlaps().load_state(list + 1);
 }
 
 // Restart files hold the contact history, so a split run starts its next solve where the

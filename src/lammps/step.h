@@ -75,6 +75,8 @@ class ContactStep : protected LAMMPS_NS::Pointers {
   const std::vector<double> &mu() const { return pull_any_ ? force_ : mu_; }
   int block() const { return block_; }
   const std::vector<Vec3> &u() const { return u_; }
+  // the kept overlaps' back-off and budget (core/kept_overlaps.h), for restart files
+  KeptOverlaps &kept_overlaps() { return kept_; }
 
  private:
   Bodies build_bodies(bool needs_owner_map, const StepEffects &effects);

@@ -3,13 +3,16 @@
 // rows that did not push, deeper rows, frictional rows and rows beyond the warm start are
 // targeted as by the paper's policy; undo() gives back exactly the paper's targets; after an
 // undo the next 1, 2, 4, ... 256 steps clear from the start; the budget follows the cleared
-// steps' iterations.
+// steps' iterations; save_state()/load_state() carry the back-off and the budget (restart
+// files), and a damaged state loads as a fresh one.
 #include "kept_overlaps.h"
 #include "targets.h"
 
 #include "core_test_util.h"
 
 #include <gtest/gtest.h>
+
+#include <limits>
 
 using namespace hardcontact;
 
@@ -155,6 +158,54 @@ TEST(KeptOverlaps, BudgetFollowsWhatClearingCosts)
   EXPECT_EQ(kept.budget(10000), 1000);
   kept.cleared(2000000000);    // 4 x that does not overflow
   EXPECT_EQ(kept.budget(2000000000), 200000000);
+}
+
+TEST(KeptOverlaps, StateCarriesTheBackOffAndTheBudget)
+{
+  KeptOverlaps a;
+  ContactProblem p = rows({});
+  a.cleared(70);
+  for (int k = 0; k < 3; ++k) {    // three stops: back-offs of 1, 2, then 4 steps under way
+    ASSERT_TRUE(a.begin_step());
+    a.undo(p);
+    while (!a.begin_step()) {
+    }
+  }
+  ASSERT_TRUE(a.begin_step());
+  a.undo(p);             // a back-off of 8 steps begins
+  ASSERT_FALSE(a.begin_step());    // and one of them is done
+  double state[KeptOverlaps::kStateSize];
+  a.save_state(state);
+  KeptOverlaps b;    // a new fix after read_restart
+  b.load_state(state);
+  EXPECT_EQ(b.budget(10000), 280);    // 4 x 70, not a tenth of maxiter
+  EXPECT_EQ(b.undone(), 0);           // counted since the fix was defined
+  // the same steps clear as in the unsplit run: the 7 left of this back-off, then 16 after
+  // the next stop
+  for (KeptOverlaps *k : {&a, &b}) {
+    int n = 0;
+    while (!k->begin_step()) ++n;
+    EXPECT_EQ(n, 7);
+    k->undo(p);
+    n = 0;
+    while (!k->begin_step()) ++n;
+    EXPECT_EQ(n, 16);
+  }
+}
+
+TEST(KeptOverlaps, DamagedStateLoadsAsFresh)
+{
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const double bad[KeptOverlaps::kStateSize] = {-3.0, 1e9, nan};
+  KeptOverlaps k;
+  k.load_state(bad);
+  EXPECT_EQ(k.budget(10000), 1000);    // no measure: a tenth of maxiter
+  EXPECT_TRUE(k.begin_step());         // no back-off under way
+  ContactProblem p = rows({});
+  k.undo(p);
+  int n = 0;
+  while (!k.begin_step()) ++n;
+  EXPECT_EQ(n, 1);    // the back-off starts at 1 again
 }
 
 }    // namespace

@@ -29,12 +29,22 @@ tangential forces too, and the warm start after read_restart must bring them bac
 Crystal: 216 touching spheres stacked as an FCC crystal slide sideways on a frictionless floor
 (periodic in x and y), so that under mpirun atoms cross processor boundaries with their
 warm-start multipliers: run 120 vs run 60 + restart + run 60 within tol * size, the restart
-file also read on one rank, and the horizontal momentum exact."""
+file also read on one rank, and the horizontal momentum exact.
+
+Kept overlaps: the hexagonal crystal of the stability suite (120 discs squeezed by gravity
+between two walls, tol 1e-6, cg warm) stops a solve with kept overlaps at its budget every few
+hundred steps, after which the next steps clear from the start (src/core/kept_overlaps.h).
+The restart file carries that back-off and the budget's measure: run 900 vs run 700 +
+write_restart + (new process) read_restart + run 200 must stop as often in steps 701-900 (within
+one stop) and its costliest step stay within 2 x + 10 of the straight run's. Without them the
+restarted run keeps overlaps at once, with a budget of maxiter / 10: measured 8 stops and 1021
+iterations in one step, against 1 stop and 50."""
 
 import numpy as np
 
 import lammps_run as lr
 import scene_data as sd
+import stability_common as stc
 
 TOL = 1.0e-4      # the fix's default tol
 DT = 0.02
@@ -136,6 +146,67 @@ def crystal(args):
         dx1, dv1 = float(np.abs(xs - x1).max()), float(np.abs(vs - v1).max())
         lr.check(dx1 <= TOL and dv1 <= TOL / 0.02, "crystal: restart file of %d ranks read on 1 "
                  "rank, within tol * size (dx %.3g, dv %.3g)" % (args.np, dx1, dv1))
+
+
+KEPT = """units           lj
+atom_style      sphere
+dimension       2
+boundary        f f p
+atom_modify     map array
+comm_modify     vel yes
+{read}
+pair_style      none
+neighbor        0.3 bin
+neigh_modify    delay 0 every 1 check yes
+fix             grav all gravity 1.0 vector 0 -1 0
+fix             1 all hardcontact tol 1e-06 solver cg warmstart yes wall xplane 0.0 10.0 wall yplane 0.0 {top!r}
+fix             e2d all enforce2d
+timestep        0.01
+thermo_style    custom step ke f_1[1] f_1[12]
+thermo_modify   norm no
+thermo          1
+{body}
+"""
+
+
+def kept_overlaps(args):
+    """The back-off and the budget of kept overlaps come back from the restart file (module
+    docstring): the restarted run stops as the unsplit one does, at as little cost."""
+    steps, half = 900, 700
+    wd = lr.fresh_workdir("%s/kept_overlaps" % args.workdir)
+    x = stc.hex_lattice_2d(10, 12, 0.5, 0.02)    # test_stab_crystal.py's 2d crystal
+    top = float(x[:, 1].max()) + 5.0
+    stc.write_data(wd / "crystal.data", ((0.0, 10.0), (0.0, top), (-0.5, 0.5)), 0.5, 1.0, x)
+
+    def run(name, read, body):
+        return lr.run_deck(args.lmp, KEPT.format(read=read, top=top, body=body), args.np, wd,
+                           deck_name="in." + name, log_name="log." + name, timeout=args.timeout)
+
+    straight = run("straight", "read_data crystal.data", "run %d" % steps).thermo[0]
+    run("split1", "read_data crystal.data", "run %d\nwrite_restart half.restart" % half)
+    split2 = run("split2", "read_restart half.restart", "run %d" % (steps - half)).thermo[0]
+
+    def window(th):
+        """iterations of the steps after `half`, and the solves stopped at their budget there"""
+        at = list(th["Step"]).index(half)
+        it = [int(v) for v in th["f_1[1]"][at + 1:]]
+        return it, int(th["f_1[12]"][-1] - th["f_1[12]"][at])
+
+    it_s, stops_s = window(straight)
+    it_r, stops_r = window(split2)
+    before = int(straight["f_1[12]"][list(straight["Step"]).index(half)])
+    print("kept overlaps: %d stops before step %d; steps %d-%d: straight %d stops, %d iterations "
+          "(largest %d); restarted %d stops, %d iterations (largest %d)"
+          % (before, half, half + 1, steps, stops_s, sum(it_s), max(it_s), stops_r, sum(it_r),
+             max(it_r)))
+    lr.check(len(it_r) == len(it_s) == steps - half, "both runs reach step %d" % steps)
+    lr.check(before >= 5 and stops_s >= 1, "the scene stops kept solves at their budget: %d "
+             "times before step %d, %d after" % (before, half, stops_s))
+    lr.check(abs(stops_r - stops_s) <= 1, "after read_restart the kept solves stop as in the "
+             "straight run (%d against %d): the back-off came back" % (stops_r, stops_s))
+    lr.check(max(it_r) <= 2 * max(it_s) + 10, "the costliest step after read_restart (%d "
+             "iterations) within 2 x + 10 of the straight run's (%d): the budget's measure came "
+             "back" % (max(it_r), max(it_s)))
 
 
 def pile(args, label="pile", extra=""):
@@ -247,6 +318,7 @@ def test():
     # rows): no state of their own beyond the multipliers, so a restart continues the same way
     pile(args, "pile_restitution_cohesion", "restitution 0.5 cohesion 0.2")
     crystal(args)
+    kept_overlaps(args)
 
 
 if __name__ == "__main__":
