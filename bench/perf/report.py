@@ -22,6 +22,30 @@ STILL_KE = 1e-10    # bench/perf/run.py: "at rest" of the part still, x m g d pe
 KEEP_MARK = "<!-- report.py keeps everything below this line: hand-written sections -->"
 
 
+# Target 3's soft twin "at about 1e-3 overlap": the largest overlap measured in the soft run (as
+# the issue's twin was described: "kn giving a largest overlap of 2.4e-3"), not the static
+# overlap its stiffness was chosen for (the impacts of the fall overlap about 10 x more).
+TARGET3_OVERLAP = 1e-3
+
+
+def soft_time_at(soft_rows, overlap):
+    """The wall time of a soft twin whose largest overlap would be `overlap`: log-log between
+    the two soft runs whose largest overlaps bracket it, else along the line through the two
+    nearest (extrapolated). (time, lower overlap, higher overlap, bracketed), or None with fewer
+    than two runs."""
+    pts = sorted((num(r["overlap_max"]), num(r["projected_s"])) for r in soft_rows)
+    pts = [p for p in pts if p[0] > 0 and p[1] > 0]
+    if len(pts) < 2:
+        return None
+    k = next((i for i in range(len(pts) - 1) if pts[i][0] <= overlap <= pts[i + 1][0]), None)
+    inside = k is not None
+    if not inside:
+        k = 0 if overlap < pts[0][0] else len(pts) - 2
+    (o1, t1), (o2, t2) = pts[k], pts[k + 1]
+    slope = math.log(t2 / t1) / math.log(o2 / o1) if o2 != o1 else 0.0
+    return t1 * (overlap / o1) ** slope, o1, o2, inside
+
+
 def num(x):
     try:
         return float(x)
@@ -434,9 +458,13 @@ class Report:
                 t_eq = math.exp(icpt + slope * math.log(target_ov))
                 self.equal[pile] = (t_eq, target_ov, slope, num(ref["loop_s"]), min(num(r["overlap_max"]) for r in ss))
             s1 = next((r for r in ss if num(r["tol"]) == 1e-3), None)
+            soft_at = soft_time_at(ss, TARGET3_OVERLAP)
             if ref and s1:
-                self.at1e3[pile] = (num(s1["projected_s"]), num(ref["loop_s"]), num(s1["overlap_max"]), num(s1["overlap_rest"]),
-                                    ref["n"])
+                self.at1e3[pile] = dict(t=soft_at[0] if soft_at else None, th=num(ref["loop_s"]), n=ref["n"],
+                                        static_t=num(s1["projected_s"]), static_ov=num(s1["overlap_max"]),
+                                        static_ovr=num(s1["overlap_rest"]))
+                if soft_at:
+                    self.at1e3[pile].update(lo=soft_at[1], hi=soft_at[2], inside=soft_at[3])
         self.save(fig, ax, "largest overlap during the settle / contact size", "wall time of the settle (s)", "Time to solution: hard vs soft (same simulated time)", "perf_hard_vs_soft.png", legend=6, loglog=True)
         self.w("## 4. Time to solution: hard against soft spheres", "",
                "The same data file and the same simulated time (the settle of section 1: 200 + 20 x layers "
@@ -452,14 +480,34 @@ class Report:
                "20 steps), so the soft overlaps are lower bounds and the soft/hard ratios at equal "
                "overlap below are conservative. Hard: `f_ID[7]`, every step. Wall time = LAMMPS loop time (a "
                "capped soft run is projected to the full run from its steps). *Time to settle*: wall time "
-               "from which the kinetic energy per sphere stays below 5e-3 m g d (`-`: not within the run).", "",
+               "from which the kinetic energy per sphere stays below 5e-3 m g d (`-`: not within the run). "
+               "*Target 3* (\"its soft twin at about 1e-3 overlap\") takes the twin whose *largest* "
+               "overlap is %s, as the issue described its own twin by its largest overlap: its time is "
+               "interpolated log-log between the two soft runs whose largest overlaps bracket it "
+               "(extrapolated, and said so, where none do). The twin calibrated to a static overlap of "
+               "1e-3 overlaps 8-16 x more in the fall (4-11 x at rest), and is compared too." % fmt(TARGET3_OVERLAP), "",
                table(["pile", "N", "run", "steps", "dt", "wall s", "largest overlap (settle)", "soft overlap at rest",
                       "KE end", "time to settle (s)", "wall / hard tol 1e-4"], tab), "",
                "![wall time against largest overlap](figures/perf_hard_vs_soft.png)", "")
-        for pile, (ts, th, ov, ovr, n) in self.at1e3.items():
-            self.targets.append(("3. settle of %s (N %s) vs soft at ~1e-3 overlap" % (pile, n), ">= 5x faster",
-                                 "soft/hard = %.2fx (soft overlap %s during the fall, %s at rest)" % (ts / th, fmt(ov, 2), fmt(ovr, 2)),
-                                 5.0 / (ts / th)))
+        for pile, a in self.at1e3.items():
+            if a["t"] is None:
+                # one soft run (the 64,000-sphere pile: part big): no twin at a largest overlap of 1e-3
+                self.targets.append(("3. settle of %s (N %s) vs soft at a largest overlap of %s" % (pile, a["n"], fmt(TARGET3_OVERLAP)),
+                                     ">= 5x faster",
+                                     "not measured: one soft twin, at a static overlap of 1e-3, which overlaps %s in the fall "
+                                     "and %s at rest (soft/hard = %.2fx against it)" % (
+                                         fmt(a["static_ov"], 2), fmt(a["static_ovr"], 2), a["static_t"] / a["th"]),
+                                     float("nan")))
+                continue
+            how = ("interpolated between the soft runs at %s and %s" if a["inside"] else
+                   "extrapolated from the soft runs at %s and %s") % (fmt(a["lo"], 2), fmt(a["hi"], 2))
+            self.targets.append(("3. settle of %s (N %s) vs soft at a largest overlap of %s" % (pile, a["n"], fmt(TARGET3_OVERLAP)),
+                                 ">= 5x faster",
+                                 "soft/hard = %.2fx (soft time %s s, %s, log-log; the twin calibrated to a static overlap of "
+                                 "1e-3 overlaps %s in the fall and %s at rest: %.2fx)" % (
+                                     a["t"] / a["th"], fmt(a["t"]), how, fmt(a["static_ov"], 2), fmt(a["static_ovr"], 2),
+                                     a["static_t"] / a["th"]),
+                                 5.0 / (a["t"] / a["th"])))
         for pile, (teq, ov, slope, th, lo) in self.equal.items():
             extra = "" if ov >= lo else ", extrapolated below the stiffest soft run (%s)" % fmt(lo, 2)
             self.targets.append(("3. %s vs soft at equal overlap (%s)" % (pile, fmt(ov, 2)), ">= 20x faster",
@@ -510,12 +558,22 @@ class Report:
                     pile, fmt(ref["loop_s"]), fmt(ref["h"]), fmt(best["loop_s"]), fmt(best["h"]),
                     num(ref["loop_s"]) / num(best["loop_s"]), fmt(best["z_end"], 4), fmt(z0, 4),
                     100.0 * abs(num(best["z_end"]) - z0) / z0, fmt(best["it_mean"]), fmt(ref["it_mean"])))
-            self.targets.append(("3. settle of %s vs soft at ~1e-3 overlap, hard at h = %s (same simulated time, section 4.1)" % (
-                                     pile, fmt(best["h"])), ">= 5x faster",
-                                 "soft/hard = %.2fx (h = 0.02 in the same run: %.2fx)" % (
-                                     num(soft["projected_s"]) / num(best["loop_s"]),
-                                     num(soft["projected_s"]) / num(ref["loop_s"])),
-                                 5.0 / (num(soft["projected_s"]) / num(best["loop_s"]))))
+            # this part's soft twin has a static overlap of 1e-3; section 4 measured what a twin
+            # whose largest overlap is TARGET3_OVERLAP takes against it (a ratio of two soft runs
+            # of one part, like every ratio here)
+            a = self.at1e3.get(pile)
+            if a and a["t"] is not None:
+                stiffer = a["t"] / a["static_t"]
+                ratio = num(soft["projected_s"]) * stiffer / num(best["loop_s"])
+                self.targets.append((
+                    "3. settle of %s vs soft at a largest overlap of %s, hard at h = %s (same simulated time, section 4.1)" % (
+                        pile, fmt(TARGET3_OVERLAP), fmt(best["h"])), ">= 5x faster",
+                    "soft/hard = %.2fx (this part's twin at a static overlap of 1e-3, %.2fx the hard run's time, "
+                    "times %.2f, what a twin at a largest overlap of %s takes against it in section 4; h = 0.02 "
+                    "in the same part: %.2fx)" % (
+                        ratio, num(soft["projected_s"]) / num(best["loop_s"]), stiffer, fmt(TARGET3_OVERLAP),
+                        num(soft["projected_s"]) * stiffer / num(ref["loop_s"])),
+                    5.0 / ratio))
 
     # ---- 5. MPI
 
