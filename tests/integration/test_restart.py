@@ -45,6 +45,7 @@ import numpy as np
 import lammps_run as lr
 import scene_data as sd
 import stability_common as stc
+import test_stab_crystal as stab_crystal
 
 TOL = 1.0e-4      # the fix's default tol
 DT = 0.02
@@ -159,7 +160,7 @@ pair_style      none
 neighbor        0.3 bin
 neigh_modify    delay 0 every 1 check yes
 fix             grav all gravity 1.0 vector 0 -1 0
-fix             1 all hardcontact tol 1e-06 solver cg warmstart yes wall xplane 0.0 10.0 wall yplane 0.0 {top!r}
+fix             1 all hardcontact tol 1e-06 solver cg warmstart yes {walls}
 fix             e2d all enforce2d
 timestep        0.01
 thermo_style    custom step ke f_1[1] f_1[12]
@@ -174,12 +175,11 @@ def kept_overlaps(args):
     docstring): the restarted run stops as the unsplit one does, at as little cost."""
     steps, half = 900, 700
     wd = lr.fresh_workdir("%s/kept_overlaps" % args.workdir)
-    x = stc.hex_lattice_2d(10, 12, 0.5, 0.02)    # test_stab_crystal.py's 2d crystal
-    top = float(x[:, 1].max()) + 5.0
-    stc.write_data(wd / "crystal.data", ((0.0, 10.0), (0.0, top), (-0.5, 0.5)), 0.5, 1.0, x)
+    x, _, box, walls, _, _ = stab_crystal.geometry(2)    # the stability suite's 2d crystal
+    stc.write_data(wd / "crystal.data", box, stab_crystal.R, 1.0, x)
 
     def run(name, read, body):
-        return lr.run_deck(args.lmp, KEPT.format(read=read, top=top, body=body), args.np, wd,
+        return lr.run_deck(args.lmp, KEPT.format(read=read, walls=walls, body=body), args.np, wd,
                            deck_name="in." + name, log_name="log." + name, timeout=args.timeout)
 
     straight = run("straight", "read_data crystal.data", "run %d" % steps).thermo[0]
