@@ -92,10 +92,34 @@ def table(head, rows):
     return "\n".join(out)
 
 
+def cpu_range(rows, key, ranks):
+    """The range of a cpu_share column (run.py) over the runs on `ranks` that recorded it."""
+    v = [num(r.get(key, "")) for r in rows if str(r.get("ranks")) == str(ranks)]
+    v = [x for x in v if not math.isnan(x)]
+    return (min(v), max(v), len(v)) if v else None
+
+
 def load_range(rows):
     loads = [num(r["load_before"]) for r in rows] + [num(r["load_after"]) for r in rows]
     loads = [x for x in loads if not math.isnan(x)]
     return (min(loads), max(loads)) if loads else (float("nan"), float("nan"))
+
+
+def solver_comm_cell(r):
+    f, d = num(r.get("solver_forward_max_s", "")), num(r.get("solver_reduce_max_s", ""))
+    return "-" if math.isnan(f) else "%s + %s" % (fmt(f), fmt(d))
+
+
+def per_iteration_cell(r):
+    f, d, it = (num(r.get(k, "")) for k in ("solver_forwards", "solver_reductions", "iterations"))
+    return "-" if math.isnan(f) or not it > 0 else "%.2f, %.2f" % (f / it, d / it)
+
+
+def cpu_cell(one, two):
+    def cell(r):
+        b, st = num(r.get("cpu_busy_pct", "")), num(r.get("cpu_steal_pct", ""))
+        return "-" if math.isnan(b) else "%.0f %%, %.1f %%" % (b, st)
+    return "%s / %s" % (cell(one), cell(two))
 
 
 class Report:
@@ -594,7 +618,8 @@ class Report:
                         "%s / %s" % (fmt(one["it_mean"]), fmt(r["it_mean"])),
                         "%s / %s" % (fmt(one["ke_end"], 3), fmt(r["ke_end"], 3)),
                         "%s / %s" % (fmt(one["overlap_max"], 2), fmt(r["overlap_max"], 2)),
-                        fmt(r["comm_s"]), "%s / %s" % (r["load_before"], r["load_after"])])
+                        solver_comm_cell(r), fmt(r["comm_s"]), per_iteration_cell(r),
+                        "%s / %s" % (r["load_before"], r["load_after"]), cpu_cell(one, r)])
             self.targets.append(("4. MPI, 2 ranks vs 1 (%s, N %s, %s, tol %s; target on 64,000)" % (pile, r["n"], r["solver"], fmt(r["tol"])),
                                  ">= 1.7x", "%.2fx" % sp, 1.7 / sp))
         self.w("## 5. MPI: 1 against 2 ranks", "",
@@ -602,8 +627,18 @@ class Report:
                "serial run of the same deck. On this 2-core machine shared with another engineer's builds "
                "and tests, a 2-rank run competes with them for the cores: look at the load column.", "",
                table(["pile", "N", "solver", "tol", "steps 1 / 2 ranks", "loop s, 1 rank", "loop s, 2 ranks", "speed-up",
-                      "it/step 1 / 2", "KE end 1 / 2", "largest overlap 1 / 2", "Comm s (2 ranks)",
-                      "load before / after (2 ranks)"], tab), "")
+                      "it/step 1 / 2", "KE end 1 / 2", "largest overlap 1 / 2",
+                      "solver's communication, 2 ranks: forwards + reductions, s (largest rank)",
+                      "LAMMPS Comm s (2 ranks)", "per iteration: forwards, reductions",
+                      "load before / after (2 ranks)", "cores busy, stolen: 1 / 2 ranks"], tab), "",
+               "The solver's communication is what the fix reports at the end of a run under "
+               "`HARDCONTACT_COMM_TIMES` (src/lammps/fix_hardcontact.cpp): the seconds each rank spent "
+               "in the forward communications of ghost velocities and in reductions, including the "
+               "wait for the other rank. It is inside LAMMPS's Modify time; LAMMPS's own Comm column "
+               "counts only its exchanges of positions and neighbor lists. Per iteration: the calls "
+               "divided by the iterations of the run (the setup's and the steps' own calls included). "
+               "Cores busy, stolen: the share of the machine's cores busy and taken by the hypervisor "
+               "during the run (/proc/stat); a serial run alone keeps 50 % busy.", "")
 
     def write(self, doc):
         m = self.machine
@@ -638,6 +673,17 @@ class Report:
                 "The benchmark took %s min." % (
                     m.get("nproc"), m.get("cpu"), m.get("load_before"), m.get("load_after"), lo, hi,
                     m.get("hardcontact"), m.get("launcher"), m.get("lammps"), m.get("minutes")), ""]
+        c1, c2 = cpu_range(self.runs, "cpu_busy_pct", 1), cpu_range(self.runs, "cpu_busy_pct", 2)
+        st = cpu_range(self.runs, "cpu_steal_pct", 1), cpu_range(self.runs, "cpu_steal_pct", 2)
+        if c1 or c2:
+            head += ["Runs since 2026-12-02 also record the share of the machine's cores busy and "
+                     "stolen by the hypervisor while they ran (/proc/stat; columns `cpu_busy_pct`, "
+                     "`cpu_steal_pct`), which the load average does not tell: %s%s%s." % (
+                         "serial runs kept %.0f-%.0f %% of the cores busy (50 %% is the run alone; %d "
+                         "runs)" % c1 if c1 else "",
+                         "; 2-rank runs %.0f-%.0f %% (%d runs)" % c2 if c2 else "",
+                         "; at most %.1f %% was stolen" % max(x[1] for x in st if x)
+                         if any(st) else ""), ""]
         for pm in self.parts:
             head += ["Part `%s` was run on its own (`PERF_ONLY=%s bench/run_perf.sh`) on %s: load %s "
                      "before and %s after, %s min, hardcontact %s." % (

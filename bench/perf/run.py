@@ -8,6 +8,7 @@ import csv
 import importlib.util
 import math
 import os
+import re
 import subprocess
 import sys
 import time
@@ -89,6 +90,35 @@ def loadavg():
     return open("/proc/loadavg").read().split()[0]
 
 
+def cpu_ticks():
+    """The machine's CPU time so far (/proc/stat, all cores): busy and stolen ticks, total."""
+    v = [int(x) for x in open("/proc/stat").readline().split()[1:9]]
+    user, nice, system, idle, iowait, irq, softirq, steal = v
+    return user + nice + system + irq + softirq, steal, sum(v)
+
+
+def cpu_share(before, after):
+    """Percent of all cores busy and stolen by the hypervisor between two cpu_ticks(): a
+    serial run on this 2-core machine keeps about 50 % busy alone; more means something else
+    ran beside it, steal means the host took the cores away (load average says neither)."""
+    busy, steal, total = (a - b for a, b in zip(after, before))
+    return (100.0 * busy / total, 100.0 * steal / total) if total > 0 else (float("nan"),) * 2
+
+
+# The fix's report of its solver's communication at the end of each run (HARDCONTACT_COMM_TIMES,
+# src/lammps/fix_hardcontact.cpp), one line per run of a deck
+COMM_LINE = re.compile(r"Fix hardcontact communication in this run, per process: (\d+) forwards "
+                       r"(\S+) s \(mean, max (\S+) s\), (\d+) reductions (\S+) s \(mean, max "
+                       r"(\S+) s\)")
+
+
+def solver_comm(text):
+    """Per run of the deck: forwards, their mean and max seconds, reductions, the same."""
+    return [dict(forwards=int(m[0]), forward_s=float(m[1]), forward_max_s=float(m[2]),
+                 reductions=int(m[3]), reduce_s=float(m[4]), reduce_max_s=float(m[5]))
+            for m in COMM_LINE.findall(text)]
+
+
 class Bench:
     def __init__(self, args):
         self.a = args
@@ -102,6 +132,9 @@ class Bench:
         self.t0 = time.time()
         self.data = {}
         self.part = ""
+        self.cpu = (float("nan"), float("nan"))    # the last launch's cpu_share()
+        # every hard run reports its solver's communication (forwards, reductions, seconds)
+        os.environ["HARDCONTACT_COMM_TIMES"] = "1"
         # A run keeps the rows of the parts it does not run from the last runs, so the report
         # covers every part: a partial run (--only) the other parts, a full run the part big
         # (run only when named; a full run of b43485a dropped its rows). A row's part is its
@@ -148,6 +181,7 @@ class Bench:
         rundir.mkdir(parents=True, exist_ok=True)
         (rundir / "in.deck").write_text(deck)
         before = loadavg()
+        ticks = cpu_ticks()
         t = time.time()
         if ranks == 1:
             text, _ = lmp.run(exe, deck, rundir, timeout=timeout)
@@ -162,7 +196,9 @@ class Bench:
             if p.returncode != 0 or "ERROR" in text:
                 raise lmp.LammpsError("mpirun in %s failed (rc %d): %s" % (rundir, p.returncode,
                                                                             p.stderr[-500:]))
-        return text, time.time() - t, before, loadavg()
+        wall = time.time() - t
+        self.cpu = cpu_share(ticks, cpu_ticks())
+        return text, wall, before, loadavg()
 
     def hard(self, rid, group, scene, data, solver, tol, phases, names, extra=None,
              start=None, restart_out=None, ranks=1, h=0.02, skin=0.3, subspace=None):
@@ -188,7 +224,7 @@ class Bench:
             self.runs.append(dict(id=rid, group=group, solver=solver, tol=tol, n=scene["n"],
                                   ranks=ranks, status="failed", part=self.part))
             return []
-        blocks, times = lmp.thermo_blocks(text), lmp.timings(text)
+        blocks, times, comms = lmp.thermo_blocks(text), lmp.timings(text), solver_comm(text)
         mgd = scene["mean_mass"] * scene["mean_d"]
         rows = []
         for k, (phase, name) in enumerate(zip(phases, names)):
@@ -225,7 +261,11 @@ class Bench:
                        loop_s=t["loop"], modify_s=t.get("Modify", float("nan")),
                        neigh_s=t.get("Neigh", float("nan")), comm_s=t.get("Comm", float("nan")),
                        ci_cand=float((it * cand).sum()), ci_active=float((it * act).sum()),
-                       load_before=lb, load_after=la, wall_s=wall)
+                       iterations=int(it.sum()),
+                       load_before=lb, load_after=la, wall_s=wall,
+                       cpu_busy_pct=self.cpu[0], cpu_steal_pct=self.cpu[1])
+            if k < len(comms):
+                row.update({"solver_" + key: v for key, v in comms[k].items()})
             row["ci_per_s_cand"] = row["ci_cand"] / row["modify_s"] if row["modify_s"] > 0 else float("nan")
             row["ci_per_s_active"] = row["ci_active"] / row["modify_s"] if row["modify_s"] > 0 else float("nan")
             row["ms_per_step"] = 1e3 * t["loop"] / max(done, 1)
@@ -287,7 +327,8 @@ class Bench:
                    projected_s=t["loop"] * nsteps / max(t["steps"], 1),
                    pair_s=t.get("Pair", float("nan")), neigh_s=t.get("Neigh", float("nan")),
                    ms_per_step=1e3 * t["loop"] / max(t["steps"], 1),
-                   load_before=lb, load_after=la, wall_s=wall)
+                   load_before=lb, load_after=la, wall_s=wall,
+                   cpu_busy_pct=self.cpu[0], cpu_steal_pct=self.cpu[1])
         row.update(extra or {})
         row["part"] = self.part
         self.runs.append(row)

@@ -3,6 +3,7 @@
 // integrate.* (eq. 19 and the skin), outputs.*, contact_history.*.
 #include "fix_hardcontact.h"
 
+#include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <string>
@@ -121,6 +122,7 @@ FixHardContact::FixHardContact(LAMMPS *lmp, int narg, char **arg) :
   atom->add_callback(hardcontact::compat::kAtomRestartCallback);
   for (int i = 0; i < atom->nlocal; ++i) outputs_.clear_per_atom(i);
 
+  report_comm_ = std::getenv("HARDCONTACT_COMM_TIMES") != nullptr;
   if (const char *prefix = std::getenv("HARDCONTACT_DUMP_PROBLEMS")) {
     dump_prefix_ = prefix;
     if (!dump_prefix_.empty() && comm->me == 0)
@@ -187,6 +189,7 @@ void FixHardContact::post_neighbor()
 // Step 0: no solve yet, but the diagnostics describe the positions the run starts from.
 void FixHardContact::setup(int)
 {
+  ops_.take_times();    // HARDCONTACT_COMM_TIMES counts from here
   walls_.init_positions();    // moving walls where their variables put them at this step
   regions_.at_current_step();    // moving regions likewise
   step_.check_bodies(walls_.walls());
@@ -244,6 +247,28 @@ hardcontact::StepResult FixHardContact::solve_and_dump(const hardcontact::StepEf
 void FixHardContact::post_run()
 {
   outputs_.end_of_run(options_.settings);
+  if (report_comm_) report_comm_times();
+}
+
+// What the solver's synchronisation points cost in this run (doc/performance.md, section 5):
+// per process, the forward communications (ghost velocities) and reductions, their calls and
+// seconds, including the wait for the slowest process; the mean and the largest over the
+// processes. A developers' switch (HARDCONTACT_COMM_TIMES), read by bench/perf.
+void FixHardContact::report_comm_times()
+{
+  const hardcontact::LammpsOps::Times t = ops_.take_times();
+  double mine[2] = {t.forward_s, t.reduce_s}, sum[2] = {0.0, 0.0}, most[2] = {0.0, 0.0};
+  MPI_Allreduce(mine, sum, 2, MPI_DOUBLE, MPI_SUM, world);
+  MPI_Allreduce(mine, most, 2, MPI_DOUBLE, MPI_MAX, world);
+  if (comm->me != 0) return;
+  char line[320];
+  std::snprintf(line, sizeof line,
+                "Fix hardcontact communication in this run, per process: %ld forwards %.4g s "
+                "(mean, max %.4g s), %ld reductions %.4g s (mean, max %.4g s), %d processes\n",
+                t.forwards, sum[0] / comm->nprocs, most[0], t.reductions, sum[1] / comm->nprocs,
+                most[1], comm->nprocs);
+  if (screen) std::fputs(line, screen);
+  if (logfile) std::fputs(line, logfile);
 }
 
 double FixHardContact::compute_vector(int n)

@@ -78,6 +78,10 @@ class FixHardContact : public Fix {
   // HARDCONTACT_DUMP_PROBLEMS: developers' file prefix for every step's problem
   // (core/problem_dump.h), empty when unset
   std::string dump_prefix_;
+  // HARDCONTACT_COMM_TIMES: developers' report of the solver's communication at the end of
+  // each run (post_run)
+  bool report_comm_ = false;
+  void report_comm_times();
 
   void history_resized();
   hardcontact::StepResult solve_and_dump(const hardcontact::StepEffects &effects);

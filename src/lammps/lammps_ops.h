@@ -1,5 +1,8 @@
 // The core's DistributedOps on top of LAMMPS: ghost copies are refreshed with the fix's own
 // forward communication (LAMMPS's swap pattern), reductions go over the world communicator.
+// Each call is counted and timed (MPI_Wtime, tens of ns against the microseconds of a call):
+// the time includes the wait for the slowest process, which is what a solver's iteration
+// pays for its synchronisation points (HARDCONTACT_COMM_TIMES, fix_hardcontact.cpp).
 #pragma once
 
 #include "../core/contact_problem.h"
@@ -40,23 +43,32 @@ class LammpsOps : public DistributedOps {
                         per_body, kMaxPerBody);
     data_ = data;
     per_body_ = per_body;
+    const double t0 = MPI_Wtime();
     compat::forward_comm(comm_, fix_);
+    times_.forward_s += MPI_Wtime() - t0;
+    ++times_.forwards;
   }
   double max_all(double local) override
   {
     double global = 0.0;
+    const double t0 = MPI_Wtime();
     MPI_Allreduce(&local, &global, 1, MPI_DOUBLE, MPI_MAX, world_);
+    reduced(t0);
     return global;
   }
   double sum_all(double local) override
   {
     double global = 0.0;
+    const double t0 = MPI_Wtime();
     MPI_Allreduce(&local, &global, 1, MPI_DOUBLE, MPI_SUM, world_);
+    reduced(t0);
     return global;
   }
   void sum_all(double *values, int n) override
   {
+    const double t0 = MPI_Wtime();
     MPI_Allreduce(MPI_IN_PLACE, values, n, MPI_DOUBLE, MPI_SUM, world_);
+    reduced(t0);
   }
   // One MPI_Allreduce with a user operation over [n_sum, sums..., maxima...]: the leading
   // count tells the operation where the sums end (it is the same on every process, so the
@@ -70,7 +82,9 @@ class LammpsOps : public DistributedOps {
     double buffer[kMaxSumMax + 1];
     buffer[0] = n_sum;
     std::copy(values, values + n, buffer + 1);
+    const double t0 = MPI_Wtime();
     MPI_Allreduce(MPI_IN_PLACE, buffer, n + 1, MPI_DOUBLE, sum_max_op(), world_);
+    reduced(t0);
     std::copy(buffer + 1, buffer + 1 + n, values);
   }
 
@@ -78,8 +92,25 @@ class LammpsOps : public DistributedOps {
   double *data() const { return data_; }
   int per_body() const { return per_body_; }
 
+  // Calls and seconds since the last take_times(), on this process.
+  struct Times {
+    long forwards = 0, reductions = 0;
+    double forward_s = 0.0, reduce_s = 0.0;
+  };
+  Times take_times()
+  {
+    const Times t = times_;
+    times_ = Times();
+    return t;
+  }
+
  private:
   static constexpr int kMaxSumMax = 8;
+  void reduced(double t0)
+  {
+    times_.reduce_s += MPI_Wtime() - t0;
+    ++times_.reductions;
+  }
   // [count, sums..., maxima...] combined element by element (core/distributed_ops.h)
   static void combine(void *in, void *inout, int *len, MPI_Datatype *)
   {
@@ -103,6 +134,7 @@ class LammpsOps : public DistributedOps {
   MPI_Comm world_ = MPI_COMM_NULL;
   double *data_ = nullptr;
   int per_body_ = 0;
+  Times times_;
 };
 
 }    // namespace hardcontact

@@ -23,3 +23,10 @@ foreach(_np 1 2 4)
   hardcontact_deck_test(NAME problem_dump_np${_np} SCRIPT integration/test_problem_dump.py
                         NP ${_np} LABELS outputs TIMEOUT 180 HOSTS launcher modern)
 endforeach()
+
+# the developers' report of the solver's communication (HARDCONTACT_COMM_TIMES): one line per
+# run, counts bounded by the iterations, nothing without the variable
+foreach(_np 1 2 4)
+  hardcontact_deck_test(NAME comm_times_np${_np} SCRIPT integration/test_comm_times.py
+                        NP ${_np} LABELS outputs TIMEOUT 180 HOSTS launcher modern liggghts)
+endforeach()
