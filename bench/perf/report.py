@@ -685,10 +685,13 @@ class Report:
                          "; at most %.1f %% was stolen" % max(x[1] for x in st if x)
                          if any(st) else ""), ""]
         for pm in self.parts:
+            other = pm.get("cpu") and pm.get("cpu") != m.get("cpu")
             head += ["Part `%s` was run on its own (`PERF_ONLY=%s bench/run_perf.sh`) on %s: load %s "
-                     "before and %s after, %s min, hardcontact %s." % (
+                     "before and %s after, %s min, hardcontact %s%s." % (
                          pm.get("only"), pm.get("only"), pm.get("date"), pm.get("load_before"),
-                         pm.get("load_after"), pm.get("minutes"), pm.get("hardcontact")), ""]
+                         pm.get("load_after"), pm.get("minutes"), pm.get("hardcontact"),
+                         "; on another host (%s): compare its times with its own part's only"
+                         % pm.get("cpu") if other else ""), ""]
         tg = [[a, b, c, ("%.2g" % d if not math.isnan(d) else "-"),
                ("yes" + (" (extrapolated)" if "extrapolated" in c else "")) if d <= 1 else "no"]
               for a, b, c, d in self.targets]
