@@ -55,7 +55,7 @@ def config(quick):
             ts_pile=(8, 8, 10), soft_overlaps=[1e-3, 1e-4], soft_cap=40.0, ts_soft_levels=2,
             ts_soft_cap_stiffest=40.0, mpi_tols=[1e-2],
             still_layers=[5], still_steps=2000, still_cap=30.0, steps_h=[0.05, 0.1],
-            subspace_window=40)
+            subspace_window=40, big_stiff_cap=60.0)
     return dict(
         footprint=10, layers=[5, 10, 20, 40], exact_layers=5, settle=lambda L: 200 + 20 * L,
         window=40, settle_cap=20.0, window_cap=12.0, long_cap=200.0,
@@ -69,7 +69,7 @@ def config(quick):
         ts_soft_levels=3, ts_soft_cap_stiffest=700.0,
         mpi_tols=[1e-4, 1e-2],
         still_layers=[5, 10, 20], still_steps=6000, still_cap=300.0, steps_h=[0.05, 0.1, 0.2],
-        subspace_window=100)
+        subspace_window=100, big_stiff_cap=3600.0)
 
 
 # The parts of a run (--only) and the groups of rows each writes
@@ -473,6 +473,19 @@ class Bench:
                   [(steps, 1200.0)], ["settle"], ranks=2)
         self.soft("tts_%s_soft_0.001" % name, "tts", sc, data, 1e-3, steps * 0.02)
 
+    def big_stiff(self):
+        """Target 3 at 64,000 spheres: the pile of part big gets two stiffer soft twins (static
+        overlaps 1e-4 and 1e-5), so that the soft runs' largest overlaps bracket 1e-3 as for
+        the piles of part tts. Not in the default set: about 30 minutes on one core (the runs
+        must cover the whole fall: its impacts make the largest overlap)."""
+        c = self.cfg
+        nx, L = (20, 10) if self.a.quick else (80, 10)
+        sc, name, data = self.pile(nx, nx, L)
+        steps = c["settle"](L)
+        for ov in (1e-4, 1e-5):
+            self.soft("tts_%s_soft_%g" % (name, ov), "tts", sc, data, ov, steps * 0.02,
+                      cap=c["big_stiff_cap"])
+
     # ---- output
 
     def save(self):
@@ -495,16 +508,17 @@ def main():
     ap.add_argument("--work", required=True)
     ap.add_argument("--results", required=True)
     ap.add_argument("--only", default=DEFAULT_PARTS,
-                    help="comma-separated subset of heights,still,tray,throughput,tts,steps,big "
+                    help="comma-separated subset of heights,still,tray,throughput,tts,steps,big,big_stiff "
                          "(still needs the restarts of a heights run; big: the 64,000-sphere "
-                         "pile, hard 1 and 2 ranks and its soft twin; not in the default set: "
-                         "about 15 minutes more)")
+                         "pile, hard 1 and 2 ranks and its soft twin; big_stiff: two stiffer "
+                         "twins of that pile (target 3 at 64,000); neither in the default set: "
+                         "about 15 and 30 minutes more)")
     a = ap.parse_args()
     b = Bench(a)
     only = a.only.split(",")
     for part, fn in (("heights", b.heights), ("still", b.still), ("tray", b.tray),
                      ("throughput", b.throughput), ("tts", b.hard_vs_soft_and_mpi),
-                     ("steps", b.larger_step), ("big", b.big)):
+                     ("steps", b.larger_step), ("big", b.big), ("big_stiff", b.big_stiff)):
         if part in only:
             b.part = part
             fn()
