@@ -14,9 +14,11 @@
 # it while measuring), HARDCONTACT_SOURCE_DESC (what that launcher was built from; default:
 # this tree's commit), SOFT_LMP (default /usr/bin/lmp), BENCH_WORKDIR (scratch, default
 # bench/work: data files, logs, restarts; not committed), PERF_ONLY (subset of
-# heights,still,tray,throughput,tts,steps,big: only those parts run (still needs the
-# restarts of a heights run), the others' rows of the last runs are
-# kept; big, the 64,000-sphere pile, runs only when named: about 15 minutes).
+# heights,still,tray,throughput,tts,steps,big,big_stiff: only those parts run (still needs
+# the restarts of a heights run), the others' rows of the last runs are kept; big, the
+# 64,000-sphere pile, and big_stiff, its two stiffer soft twins (target 3 at 64,000), run only
+# when named: about 15 and 30 minutes). Hard runs report their solver's communication
+# (HARDCONTACT_COMM_TIMES); every run records the cores' busy and stolen share.
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh" "perf-" "$@"
 
@@ -47,7 +49,10 @@ MACHINE="$RESULTS/perf_machine.csv"
 # a full run measured every part but big again: the notes of earlier partial runs go
 if [ -z "${PERF_ONLY:-}" ]; then
   for f in "$RESULTS"/perf_machine_*.csv; do
-    [ -e "$f" ] && [ "$f" != "$RESULTS/perf_machine_big.csv" ] && rm -f "$f"
+    case "$f" in
+      "$RESULTS/perf_machine_big.csv" | "$RESULTS/perf_machine_big_stiff.csv") ;;
+      *) [ -e "$f" ] && rm -f "$f" ;;
+    esac
   done
 fi
 {
