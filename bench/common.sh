@@ -76,3 +76,19 @@ run             200
 write_restart   tray.restart
 EOF
 }
+
+# bench_rest_problems NAME:SETTLE ...: the scenes of bench/spectrum/scenes_run.py settled with
+# the default solver and a window at rest dumped into $WORK (HARDCONTACT_DUMP_PROBLEMS); fills
+# PROBLEMS with NAME@STEP=FILE for the two steps run_spectrum.sh studies: the third step at
+# rest and 9 later (run_coarse_space.sh, run_amg.sh)
+bench_rest_problems() {
+  "$PY" "$ROOT/bench/spectrum/scenes_run.py" --lmp "$LMP" --work "$WORK" "${@%%:*}"
+  PROBLEMS=()
+  local entry name settle
+  for entry in "$@"; do
+    name=${entry%%:*}
+    settle=${entry##*:}
+    PROBLEMS+=("$name@$((settle + 3))=$WORK/$name/problem.$((settle + 3))"
+               "$name@$((settle + 12))=$WORK/$name/problem.$((settle + 12))")
+  done
+}

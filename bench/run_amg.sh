@@ -22,22 +22,14 @@ LOAD_BEFORE="$(cut -d' ' -f1-3 /proc/loadavg)"
 T0=$SECONDS
 mpicxx -O2 -DNDEBUG -I/usr/include/hypre -I/usr/include/eigen3 \
   "$ROOT/bench/spectrum/amg_pcg.cpp" -o "$WORK/amg_pcg" -lHYPRE
-"$PY" "$ROOT/bench/spectrum/scenes_run.py" --lmp "$LMP" --work "$WORK" "${NAMES[@]%%:*}"
-SYSTEMS=()
-for entry in "${NAMES[@]}"; do
-  name=${entry%%:*}
-  settle=${entry##*:}
-  # the steps run_spectrum.sh studies: the third step at rest and 9 later
-  SYSTEMS+=("$name@$((settle + 3))=$WORK/$name/problem.$((settle + 3))"
-            "$name@$((settle + 12))=$WORK/$name/problem.$((settle + 12))")
-done
+bench_rest_problems "${NAMES[@]}"
 OUT="$RESULTS/amg.txt"
 {
   echo "BoomerAMG against Jacobi as cg's preconditioner ($MODE), $(date -u '+%Y-%m-%d %H:%M UTC')," \
        "$(sed -n 's/^model name[[:space:]]*: //p' /proc/cpuinfo | head -1), hardcontact $GIT,"
   echo "hypre $(dpkg-query -W -f '${Version}' libhypre-dev 2>/dev/null), load before $LOAD_BEFORE;" \
        "linear PCG on the exact pushing rows from the fix's warm start to its test (tol 1e-4)"
-  (cd "$ROOT/bench/spectrum" && "$PY" amg.py "$WORK/system" "${SYSTEMS[@]}") |
+  (cd "$ROOT/bench/spectrum" && "$PY" amg.py "$WORK/system" "${PROBLEMS[@]}") |
     while read -r label path; do
       OMP_NUM_THREADS=1 OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 \
         "$WORK/amg_pcg" "$path" "$label"

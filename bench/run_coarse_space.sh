@@ -15,15 +15,7 @@ NAMES=(pile10:400 pile20:600)    # scene:settle steps (bench/spectrum/scenes_run
 T0=$SECONDS
 GIT="$(cd "$ROOT" && git rev-parse --short HEAD 2>/dev/null || echo unknown)"
 LOAD_BEFORE="$(cut -d' ' -f1-3 /proc/loadavg)"
-"$PY" "$ROOT/bench/spectrum/scenes_run.py" --lmp "$LMP" --work "$WORK" "${NAMES[@]%%:*}"
-PROBLEMS=()
-for entry in "${NAMES[@]}"; do
-  name=${entry%%:*}
-  settle=${entry##*:}
-  # the steps run_spectrum.sh studies: the third step at rest and 9 later
-  PROBLEMS+=("$name@$((settle + 3))=$WORK/$name/problem.$((settle + 3))"
-             "$name@$((settle + 12))=$WORK/$name/problem.$((settle + 12))")
-done
+bench_rest_problems "${NAMES[@]}"
 BODY="$(cd "$ROOT/bench/spectrum" && "$PY" coarse_space.py --csv "$RESULTS/coarse_space.csv" "${PROBLEMS[@]}")"
 {
   echo "coarse space study ($MODE), $(date -u '+%Y-%m-%d %H:%M UTC'), launcher $LMP,"
