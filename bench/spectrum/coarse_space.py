@@ -28,7 +28,7 @@ import scipy.sparse as sp
 import scipy.sparse.linalg as spl
 
 import problem
-from analyze import pcg, reference
+from analyze import pcg, reference, tentative
 
 RADII = (1, 2, 3, 4, 6)
 THRESHOLDS = (2e-3, 5e-3, 1e-2, 2e-2, 5e-2, 1e-1)
@@ -64,30 +64,19 @@ def aggregates(bi, bj, n_bodies, radius):
 
 
 def prolongator(P, free, radius, kind):
-    """P: per aggregate, an orthonormal basis of the candidates' values on its rows."""
+    """P: per aggregate, an orthonormal basis of the candidates' values on its rows
+    (analyze.tentative); the aggregates that hold no row are dropped."""
     bi, bj, n = P["bi"][free], P["bj"][free], P["normal"][free]
     agg, count = aggregates(bi, bj, P["n_bodies"], radius)
-    row_agg = agg[bi]
+    _, row_agg = np.unique(agg[bi], return_inverse=True)
+    T = sp.csr_matrix((np.ones(len(bi)), (np.arange(len(bi)), row_agg)),
+                      shape=(len(bi), row_agg.max() + 1))
     if kind == "stress":
         cand = np.column_stack([n[:, 0] ** 2, n[:, 1] ** 2, n[:, 2] ** 2,
                                 n[:, 0] * n[:, 1], n[:, 0] * n[:, 2], n[:, 1] * n[:, 2]])
     else:
         cand = np.ones((len(bi), 1))
-    order = np.argsort(row_agg, kind="stable")
-    bounds = np.searchsorted(row_agg[order], np.arange(count + 1))
-    r, c, v, col = [], [], [], 0
-    for a in range(count):
-        idx = order[bounds[a]:bounds[a + 1]]
-        if len(idx) == 0:
-            continue
-        Q, R = np.linalg.qr(cand[idx])
-        keep = np.abs(np.diag(R)) > 1e-8 * max(np.abs(np.diag(R)).max(), 1e-300)
-        for j in np.flatnonzero(keep):
-            r += idx.tolist()
-            c += [col] * len(idx)
-            v += Q[:, j].tolist()
-            col += 1
-    return sp.csr_matrix((v, (r, c)), shape=(len(bi), col)), count
+    return tentative(T, cand), count
 
 
 def study(label, path, out):
