@@ -46,7 +46,7 @@ hardcontact::FixOptions checked_options(LAMMPS *lmp, int narg, char **arg)
                              "torque (the spheres spin): use atom_style sphere");
     if (!hardcontact::solver_has_friction(o.solver_name))
       hardcontact::compat::error_all(lmp->error, FLERR,
-                                     "Fix hardcontact solver {} has no friction: use apgd, pgs or "
+                                     "Fix hardcontact solver {} has no friction: use nsgs, apgd, pgs or "
                                      "uzawa with friction",
                                      o.solver_name);
   }

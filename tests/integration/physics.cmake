@@ -69,6 +69,15 @@ foreach(_effect restitution moving_wall region_wall moving_region cohesion frict
   endforeach()
 endforeach()
 
+# the same friction decks solved by nsgs (block Gauss-Seidel on the true Coulomb law, no De
+# Saxce fixed point): the analytic rolling, slipping and stopping outcomes, the oblique pair,
+# and the spinning gas's energy, momenta and rank agreement
+foreach(_np 1 2 4)
+  hardcontact_deck_test(NAME phys_friction_nsgs_np${_np} SCRIPT integration/test_phys_friction.py
+                        NP ${_np} LABELS physics TIMEOUT 300 ARGS --solver nsgs
+                        HOSTS launcher modern liggghts)
+endforeach()
+
 # the neighbor rebuild look-ahead under acceleration: a falling sphere with a skin 9 x its step
 hardcontact_deck_test(NAME phys_skin_lookahead SCRIPT integration/test_phys_skin_lookahead.py
                       NP 1 LABELS physics TIMEOUT 300 HOSTS launcher modern liggghts)

@@ -40,6 +40,7 @@ mechanics gives, at the rank count ctest gives (np 1/2/4):
 """
 
 import math
+import sys
 
 import numpy as np
 
@@ -469,8 +470,27 @@ def gas(args):
                  % (args.np, a.timestep, dx, dv, dw))
 
 
+def with_solver(argv):
+    """`--solver NAME` (ours, taken out before the common arguments are read): every deck of
+    this script runs the fix with `solver NAME` (tests/integration/physics.cmake registers the
+    script once for the default solver and once for nsgs, the Gauss-Seidel solver of the true
+    Coulomb law). Returns the remaining arguments."""
+    if "--solver" not in argv:
+        return argv
+    k = argv.index("--solver")
+    name = argv[k + 1]
+    run_deck = lr.run_deck
+
+    def run_with(lmp, deck, *a, **kw):
+        lines = [ln.replace(" hardcontact ", " hardcontact solver %s " % name, 1)
+                 if ln.startswith("fix") else ln for ln in deck.split("\n")]
+        return run_deck(lmp, "\n".join(lines), *a, **kw)
+    lr.run_deck = run_with
+    return argv[:k] + argv[k + 2:]
+
+
 def test():
-    args = lr.test_args(__doc__)
+    args = lr.test_args(__doc__, with_solver(sys.argv[1:]))
     incline_tests(args)
     launched(args)
     rolling_tests(args)

@@ -82,6 +82,38 @@ struct CoulombLaw {
   {
     return k.friction * norm2(g[1], g[2]);
   }
+
+  // The exact solve of one contact's true Coulomb law with the other contacts held
+  // (nonsmooth Gauss-Seidel, solvers/nsgs.h), no shift needed. g: the unshifted gradient
+  // (gap, h v_t) at m; d: the diagonal of the contact's block of A, which is diagonal with
+  // equal tangential entries (DualOperator::block_diagonals), so the block decouples. With
+  // q = g - D m the gradient of the other contacts, the three cases of Coulomb's law are:
+  // take-off (m = 0) when the free gap q_n >= 0; else the normal force closes the gap,
+  // m_n = -q_n / d_n (g_n = 0 exactly, so no lift-off: De Saxce's fixed point without its
+  // loop); stick when the force that stops the slip, -q_t / d_t, lies in the disc of radius
+  // coef m_n; else slide, the tangential force on that disc's edge opposite to q_t (then
+  // g_t = q_t + d_t m_t is parallel to q_t: the force opposes the slip). A larger diagonal
+  // (a Gershgorin bound) gives the same fixed point with a shorter step.
+  static void local_solve(double *m, const double *g, const double *d, const Coefficients &k)
+  {
+    const double n = m[0] - g[0] / d[0];
+    if (!(n > 0.0)) {
+      m[0] = m[1] = m[2] = 0.0;
+      return;
+    }
+    m[0] = n;
+    disc(m + 1, g + 1, d[1], k.friction * n);
+  }
+  // The disc part of local_solve: v = v - g / d, brought back to the disc of radius cap
+  // along itself (the exact minimiser over the disc when the block's entries are equal).
+  static void disc(double *v, const double *g, double d, double cap)
+  {
+    const double a = v[0] - g[0] / d, b = v[1] - g[1] / d;
+    const double len = norm2(a, b);
+    const double f = len > cap ? cap / len : 1.0;
+    v[0] = a * f;
+    v[1] = b * f;
+  }
 };
 
 }    // namespace hardcontact

@@ -26,6 +26,13 @@ struct NormalLaw {
     return violation(g[0], m[0], scale);
   }
   static double shift(const double *, const Coefficients &) { return 0.0; }
+
+  // The exact solve of one row with the others held (nonsmooth Gauss-Seidel, solvers/nsgs.h):
+  // g the row's gap at m, d its diagonal entry of A (or a larger one, for a damped step).
+  static void local_solve(double *m, const double *g, const double *d, const Coefficients &)
+  {
+    m[0] = project(m[0] - g[0] / d[0]);
+  }
 };
 
 }    // namespace hardcontact

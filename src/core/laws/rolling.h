@@ -9,6 +9,7 @@
 // dissipate mu m_n |v_t| + mur m_n R |w_roll|.
 #pragma once
 
+#include "coulomb.h"
 #include "law.h"
 
 #include <algorithm>
@@ -107,6 +108,24 @@ struct RollingLaw {
   static double shift(const double *g, const Coefficients &k)
   {
     return k.friction * norm2(g[1], g[2]) + k.rolling * norm2(g[3], g[4]);
+  }
+
+  // The solve of one contact with the others held (solvers/nsgs.h), as CoulombLaw's, with the
+  // rolling disc beside the tangential one: the normal force closes the gap (the normal entry
+  // of the block couples with nothing), then each disc takes its force from g and its own
+  // diagonal entry. The spins couple the tangential and rolling entries of the block, so d
+  // must dominate them (d_t, d_r raised by the coupling: NsgsSolver), which makes this a
+  // convergent damped step with the exact law's fixed point.
+  static void local_solve(double *m, const double *g, const double *d, const Coefficients &k)
+  {
+    const double n = m[0] - g[0] / d[0];
+    if (!(n > 0.0)) {
+      for (int q = 0; q < block; ++q) m[q] = 0.0;
+      return;
+    }
+    m[0] = n;
+    CoulombLaw::disc(m + 1, g + 1, d[1], k.friction * n);
+    CoulombLaw::disc(m + 3, g + 3, d[3], k.rolling * n);
   }
 };
 

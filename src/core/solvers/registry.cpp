@@ -2,6 +2,7 @@
 #include "../solver.h"
 #include "apgd.h"
 #include "exact.h"
+#include "nsgs.h"
 #include "projected_cg.h"
 #include "pgs.h"
 #include "uzawa.h"
@@ -25,6 +26,9 @@ const Entry registry[] = {
     {"pgs", [] { return std::unique_ptr<Solver>(new Pgs()); },
      [] { return std::unique_ptr<Solver>(new PgsFriction()); },
      [] { return std::unique_ptr<Solver>(new PgsRolling()); }},
+    {"nsgs", [] { return std::unique_ptr<Solver>(new Nsgs()); },
+     [] { return std::unique_ptr<Solver>(new NsgsFriction()); },
+     [] { return std::unique_ptr<Solver>(new NsgsRolling()); }},
     {"cg", [] { return std::unique_ptr<Solver>(new ProjectedCg()); }, nullptr, nullptr},
     {"exact", [] { return std::unique_ptr<Solver>(new Exact()); }, nullptr, nullptr},
 };

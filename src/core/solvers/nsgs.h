@@ -1,0 +1,60 @@
+// Nonsmooth (block) Gauss-Seidel on the frictional contact problem: each contact in turn takes
+// the exact solution of its own law with the other contacts held (Law::local_solve), in a
+// fixed order that runs forward and backward on alternate sweeps (a symmetric sweep: under
+// gravity the rows come roughly bottom-up in the host's order, so one direction carries the
+// weight down the pile and the other the reaction back up).
+//
+// Why it is the frictional solver: the local solve of Coulomb's law is exact and closed-form
+// (a sphere contact's block of A is diagonal), so it solves the true law - no convex relaxation
+// and no De Saxce shift to bring to a fixed point by an outer loop, which is where the
+// projected-gradient solvers spent most of their iterations (doc/performance.md 10.4, 10.6).
+// The literature's comparison of frictional solvers on rigid granular sets (Acary, Bremond &
+// Huber 2018) found this family the most efficient and robust (../shared/FRICTION_SOLVERS.md).
+//
+// Under domain decomposition the sweep splits as pgs's (block_sweep.h): rows shared with
+// another process are updated first, all at once, from the gaps of the last exchange and with
+// a Gershgorin diagonal (a damped local solve both processes compute alike: momentum stays
+// exact); the owned rows are then swept Gauss-Seidel.
+#pragma once
+
+#include "../laws/coulomb.h"
+#include "../laws/normal.h"
+#include "../laws/rolling.h"
+#include "iterative_solver.h"
+
+namespace hardcontact {
+
+template <class Law>
+class NsgsSolver : public IterativeSolver<Law> {
+ public:
+  double memory_usage() const override
+  {
+    return IterativeSolver<Law>::memory_usage() + bytes_of(diag_, dmu_, shared_);
+  }
+
+ protected:
+  using IterativeSolver<Law>::B;
+  void rows_changed(const SolverSettings &) override;
+  bool step(const SolverSettings &s, std::vector<double> &mu, std::vector<Vec3> &u) override;
+  // The residual of the true law: each row's shift is set to Law::shift of its iterate, so the
+  // base's fixed point of the shifts is always met (drift 0) and the test measures Coulomb's
+  // law itself (laws/coulomb.h: with the shift at its value, the violation is that of g_n = 0
+  // for a pushing contact, g_n >= 0 for a free one).
+  double set_residual(const std::vector<double> &mu, const std::vector<Vec3> &u) override;
+
+ private:
+  // The row's own gradient without the shift (the local solve needs none).
+  void true_gradient(int c, const std::vector<Vec3> &u, double *g) const;
+  void local(int c, std::vector<double> &mu, std::vector<Vec3> &u);
+  std::vector<double> diag_;      // per row, B entries: the local solve's diagonal
+  std::vector<double> dmu_;       // shared rows' steps of one sweep
+  std::vector<int> shared_;       // rows of the set coupling an owned body with a ghost
+  std::vector<int> own_;          // the other rows of the set, in sweep order
+  int sweeps_ = 0;
+};
+
+using Nsgs = NsgsSolver<NormalLaw>;
+using NsgsFriction = NsgsSolver<CoulombLaw>;
+using NsgsRolling = NsgsSolver<RollingLaw>;
+
+}    // namespace hardcontact
