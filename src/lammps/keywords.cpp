@@ -67,6 +67,7 @@ void parse_solver(LAMMPS *lmp, char **values, int, FixOptions &o)
 void parse_tol(LAMMPS *lmp, char **values, int, FixOptions &o)
 {
   o.settings.tol = number(lmp, "tol", values[0]);
+  o.tol_given = true;
   if (o.settings.tol <= 0.0 || o.settings.tol >= 1.0)
     compat::error_all(lmp->error, FLERR,
                       "Fix hardcontact tol must be in (0, 1) (an overlap relative to the "

@@ -49,7 +49,7 @@ import physics_common as pc
 import scene_data as sd
 
 H = 0.01
-TOL = 1e-4    # the fix's default
+TOL = 1e-4    # set in the decks (the default with friction is 1e-2: checked by default_tol)
 # A frictional contact keeps an overlap of up to KEPT tol x its size (r for a wall row) rather
 # than clearing it (core/targets.cpp, kKeptOverlap; doc/fix_hardcontact.md): a resting sphere
 # may sink that far into the floor, and its rolling radius a = r - overlap then turns
@@ -73,7 +73,7 @@ set             atom 1 omega 0 {w0} 0
 pair_style      none
 neighbor        0.5 bin
 {pre}
-fix             hc all hardcontact {keywords} {wall}
+fix             hc all hardcontact tol 0.0001 {keywords} {wall}
 fix             g all gravity 1.0 vector {gx} 0 {gz}
 timestep        {h}
 compute         om all property/atom omegay
@@ -222,7 +222,7 @@ create_atoms    1 single -20 0.5 0
 set             atom 1 diameter 1.0 density 1.0
 pair_style      none
 neighbor        0.5 bin
-fix             hc all hardcontact friction 0.5 {keywords} wall yplane 0 NULL
+fix             hc all hardcontact friction 0.5 tol 0.0001 {keywords} wall yplane 0 NULL
 fix             g all gravity 1.0 vector {gx} {gy} 0
 fix             2d all enforce2d
 timestep        {h}
@@ -470,6 +470,28 @@ def gas(args):
                  % (args.np, a.timestep, dx, dv, dw))
 
 
+def default_tol(args):
+    """Without `tol`, friction solves to 1e-2 and the paper's law to 1e-4 (the fix's defaults,
+    doc/fix_hardcontact.md): the spinning gas stopped after one iteration (maxiter 1) reports
+    the tolerance it was held to; `tol` given wins."""
+    for name, kw, want in (("friction", "friction 0.5", "tol 0.01;"),
+                           ("frictionless", "", "tol 0.0001;"),
+                           ("friction_tol_given", "friction 0.5 tol 1e-4", "tol 0.0001;")):
+        wd = lr.fresh_workdir("%s/default_tol_%s" % (args.workdir, name))
+        scene = sd.gas(n_side=6, converge=0.6, seed=4)
+        box = scene.box.copy()
+        box[:, 0] -= 5.0
+        box[:, 1] += 5.0
+        sd.write_data(wd / "gas.data", scene._replace(box=box), "friction test: default tol")
+        deck = GAS.format(n=40).replace("hardcontact friction 0.5 tol 1e-8",
+                                        "hardcontact %s maxiter 1" % kw)
+        lr.run_deck(args.lmp, deck, args.np, wd, timeout=args.timeout)
+        warn = [ln for ln in (wd / "log.lammps").read_text().splitlines()
+                if "stopped unconverged" in ln]
+        lr.check(len(warn) > 0 and want in warn[0],
+                 "default tol (%s): %s" % (name, warn[0] if warn else "no unconverged solve"))
+
+
 def with_solver(argv):
     """`--solver NAME` (ours, taken out before the common arguments are read): every deck of
     this script runs the fix with `solver NAME` (tests/integration/physics.cmake registers the
@@ -498,6 +520,7 @@ def test():
     frictionless_same(args)
     oblique(args)
     gas(args)
+    default_tol(args)
 
 
 if __name__ == "__main__":

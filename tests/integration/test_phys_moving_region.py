@@ -41,7 +41,7 @@ neighbor        0.5 bin
 variable        xf equal {vx}*time
 variable        zf equal {vz}*time
 region          floor plane 0 0 0 0 0 1 side in move v_xf NULL v_zf
-fix             hc all hardcontact {friction} wall region floor
+fix             hc all hardcontact tol 1e-4 {friction} wall region floor
 fix             g all gravity 1.0 vector 0 0 -1
 timestep        {h}
 compute         om all property/atom omegay
@@ -141,7 +141,7 @@ variable        theta equal {omega}*time
 region          drum cylinder y 0 0 5 -100 100 side in open 1 open 2 rotate v_theta 0 0 0 0 1 0 units box
 pair_style      none
 neighbor        0.5 bin
-fix             hc all hardcontact friction 0.5 wall region drum
+fix             hc all hardcontact tol 1e-4 friction 0.5 wall region drum
 fix             g all gravity 1.0 vector 0 0 -1
 timestep        {h}
 variable        xc equal xcm(all,x)
