@@ -7,7 +7,7 @@ the mean height of the spheres and the kinetic energy per sphere; cost: the loop
 time the run took to come to rest (kinetic energy per sphere below 1e-6 m g d). Writes
 results/friction_front.csv and .md and a plot of the mean height against the loop time.
 
-  python3 bench/friction_front/front.py [--quick] [--jobs 2]
+  python3 bench/friction_front/front.py [--quick] [--jobs 2] [--reuse] [--scene settle20]
 """
 
 import argparse
@@ -94,12 +94,19 @@ def main():
     ap.add_argument("--lmp", default=os.environ.get("HARDCONTACT_LMP", str(ROOT / "build" / "lmp_hardcontact")))
     ap.add_argument("--soft-lmp", default=os.environ.get("SOFT_LMP", "/usr/bin/lmp"))
     ap.add_argument("--only", default="", help="comma-separated run ids")
+    ap.add_argument("--scene", choices=("settle10", "settle20"), default="settle10",
+                    help="settle10: the 1210-sphere pile to t = 30 (default); settle20: issue "
+                         "36's 8000-sphere, 20-layer settle (20 x 20 columns) to t = 12 (600 "
+                         "steps of 0.02) at the default and at h 0.04, with its twins")
     ap.add_argument("--reuse", action="store_true",
                     help="read the runs whose deck is unchanged and finished from their logs")
     a = ap.parse_args()
-    layers, T = (6, 10.0) if a.quick else (10, 30.0)
-    scene = scenes.pile(11, 11, layers)
-    work = Path(os.environ.get("BENCH_WORKDIR", ROOT / "bench" / "work")) / ("friction_front_" + ("quick" if a.quick else "full"))
+    side, layers, T = (11, 6, 10.0) if a.quick else (11, 10, 30.0)
+    if a.scene == "settle20":
+        side, layers, T = 20, 20, 12.0
+    scene = scenes.pile(side, side, layers)
+    tag = ("quick" if a.quick else "full") + ("" if a.scene == "settle10" else "_" + a.scene)
+    work = Path(os.environ.get("BENCH_WORKDIR", ROOT / "bench" / "work")) / ("friction_front_" + tag)
     work.mkdir(parents=True, exist_ok=True)
     data = work / "pile.data"
     scenes.write(scene, data)
@@ -110,6 +117,8 @@ def main():
     # (at tol 1e-6 most solves of the creeping pile stop at maxiter: 322 by t = 19.5)
     if a.quick:
         grid += [("apgd", 1e-6, 0.02), ("nsgs", 1e-3, 0.02)]
+    if a.scene == "settle20":
+        grid = [("apgd", 1e-2, 0.02), ("apgd", 1e-2, 0.04)]
     for solver, tol, h in grid:
         rid = "%s_tol%g_h%g" % (solver, tol, h)
         runs.append((rid, "hard", hard_deck(scene, str(data), solver, tol, h, T),
@@ -148,7 +157,8 @@ def main():
         for row in ex.map(one, runs):
             if row is not None:
                 rows.append(row)
-    out = ROOT / "bench" / "results" / ("friction_front%s.csv" % ("_quick" if a.quick else ""))
+    out = ROOT / "bench" / "results" / ("friction_front%s%s.csv" % (
+        "_quick" if a.quick else "", "" if a.scene == "settle10" else "_" + a.scene))
     if a.only and out.exists():    # rerun of some runs: the others' rows stay
         with open(out) as f:
             done = {r["run"]: r for r in csv.DictReader(f)}

@@ -1,7 +1,7 @@
 """Table and plot of bench/results/friction_front.csv (front.py): per run the observable (mean
 height at t = T), the time it took to come to rest, overlaps, iterations and the loop time, with
 the ratios against the soft twins of the same run; the plot draws the mean height against the
-loop time (soft twins as squares, the fix's default circled).
+loop time (soft twins as squares, the fix's default circled (grey: the default before)).
 
   python3 bench/friction_front/report.py [results/friction_front.csv]
 """
@@ -11,7 +11,8 @@ import sys
 from pathlib import Path
 
 ROOT = Path(__file__).resolve().parents[2]
-DEFAULT = ("apgd", 1e-4, 0.02)    # the fix's default with friction (solver, tol) at the deck's h
+DEFAULT = ("apgd", 1e-2, 0.02)    # the fix's default with friction (solver, tol) at the deck's h
+OLD_DEFAULT = ("apgd", 1e-4, 0.02)    # before 2026-12-04
 
 
 def load(path):
@@ -60,11 +61,15 @@ def main():
         ax.annotate("%s %g h %g" % (r["solver"], r["tol"], r["h"]), (r["loop_s"], r["zavg"]),
                     fontsize=7, xytext=(3, 3), textcoords="offset points")
         if (r["solver"], r["tol"], r["h"]) == DEFAULT:
-            ax.plot(r["loop_s"], r["zavg"], "o", ms=14, mfc="none", color="k")
+            ax.plot(r["loop_s"], r["zavg"], "o", ms=14, mfc="none", color="k", label="default")
+        if (r["solver"], r["tol"], r["h"]) == OLD_DEFAULT:
+            ax.plot(r["loop_s"], r["zavg"], "o", ms=14, mfc="none", color="0.6", ls="none",
+                    label="default before 2026-12-04")
     for r in soft.values():
         ax.plot(r["loop_s"], r["zavg"], "s", color="C3")
         ax.annotate("soft, static overlap %g" % r["tol"], (r["loop_s"], r["zavg"]), fontsize=7,
                     xytext=(3, -9), textcoords="offset points", color="C3")
+    ax.legend(fontsize=7, loc="lower right")
     ax.set_xscale("log")
     ax.set_xlabel("loop time (s, one core)")
     ax.set_ylabel("mean height of the spheres at t = %g" % hard[0]["T"])

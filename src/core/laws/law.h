@@ -10,6 +10,9 @@
 //                           floor for a row shown to be at most floor; also shift(g, k)
 //   shift(g, k)             the normal target shift that removes the convex relaxation's
 //                           lift-off at the fixed point (De Saxce), 0 for the normal law
+//   local_solve(m, g, d, k) the law of one contact solved with the others held, from its
+//                           unshifted gradient g at m and a diagonal d of its block of A
+//                           (nonsmooth Gauss-Seidel, solvers/nsgs.h)
 #pragma once
 
 #include <cmath>
