@@ -47,6 +47,11 @@ hardcontact_deck_test(NAME stab_polydisperse_np1 HOSTS launcher SCRIPT integrati
   LABELS stability ARGS --timeout 120 TIMEOUT 300)
 hardcontact_deck_test(NAME stab_polydisperse_np2 HOSTS launcher SCRIPT integration/test_stab_polydisperse.py NP 2
   LABELS stability ARGS --timeout 120 TIMEOUT 300)
+# the same on a frictional bed (mu 0.5) at the fix's default tolerance with friction (1e-2)
+foreach(_np 1 2)
+  hardcontact_deck_test(NAME stab_polydisperse_friction_np${_np} HOSTS launcher SCRIPT integration/test_stab_polydisperse.py
+    NP ${_np} LABELS stability ARGS --friction 0.5 --timeout 120 TIMEOUT 300)
+endforeach()
 
 # deep piles: a 40-row disordered 2d pile and a 60-sphere column; in CI the default solvers
 # (cg without friction, apgd) on both, and on the column the paper's uzawa and the exact

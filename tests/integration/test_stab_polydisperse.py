@@ -21,7 +21,11 @@ projection (|u^{n+1}|^2/2 - |u^n|^2/2 - h g.u^{n+1} <= -|u^{n+1} - u^n|^2/2, mas
 Run 2: the same deck with the skin the documentation asks for (skin >= 4 x timestep x largest
 speed), using the largest speed run 1 reached (struck light spheres) and a margin of 1.5: must
 run to the end without ERROR, with the same feasibility checks.
-Serial and 2 ranks."""
+Serial and 2 ranks.
+With `--friction MU` (ours, taken out before the common arguments): the same scene with
+Coulomb friction MU on every contact at the fix's default tolerance with friction (1e-2: no
+`tol` in the deck, so the default is what is tested): every check above holds with tol 1e-2 (the energy check counts the
+translational kinetic energy, which the spins' energy only adds to)."""
 
 import sys
 from pathlib import Path
@@ -62,8 +66,23 @@ def scene():
     return x, v, radius, len(light)
 
 
+def friction_arg(argv):
+    """(MU or None, the other arguments)."""
+    if "--friction" not in argv:
+        return None, argv
+    k = argv.index("--friction")
+    return float(argv[k + 1]), argv[:k] + argv[k + 2:]
+
+
 def test():
-    args = lr.test_args(__doc__, sys.argv[1:])
+    global TOL
+    mu, argv = friction_arg(sys.argv[1:])
+    args = lr.test_args(__doc__, argv)
+    # with friction the deck gives no tol: the fix's default with friction applies
+    tol_kw = "tol %g" % TOL
+    if mu is not None:
+        TOL = 1e-2
+        tol_kw = "friction %g" % mu
     x, v, radius, nlight = scene()
     n = len(x)
     box = ((0.0, LX), (0.0, LY), (0.0, TOP))
@@ -72,10 +91,11 @@ def test():
     walls = "wall xplane 0.0 %r wall yplane 0.0 %r wall zplane 0.0 %r" % (LX, LY, TOP)
     wall_list = [(0, 0.0, 1), (0, LX, -1), (1, 0.0, 1), (1, LY, -1), (2, 0.0, 1), (2, TOP, -1)]
     chk = sc.Checks()
-    text = sc.deck("data.poly", NSTEPS, H, SKIN_LARGE, "tol %g %s" % (TOL, walls),
+    text = sc.deck("data.poly", NSTEPS, H, SKIN_LARGE, "%s %s" % (tol_kw, walls),
                    boundary="f f f", gravity=G, dump_every=50)
     res, th = sc.run(args, text, args.workdir + "/run", data)
-    label = "polydisperse (ratio 10 in radius, 1000 in mass, %d bodies)" % n
+    label = "polydisperse (ratio 10 in radius, 1000 in mass, %d bodies%s)" % (
+        n, "" if mu is None else ", friction %g, default tol" % mu)
     ov = sc.check_common(th, n, TOL, label, check=chk)
 
     ke, pe = th["c_ke"], th["c_P[5]"]
@@ -99,7 +119,7 @@ def test():
         % (label, len(frames), worst_pair))
     chk(worst_wall <= TOL * (1 + 1e-9), "%s: wall overlap from dumps %.3g <= tol" % (label, worst_wall))
     zheavy = sc.positions(frames[-1])[nlight:, 2]
-    sc.report("polydisperse_np%d" % args.np, bodies=n, steps=NSTEPS, overlap=ov,
+    sc.report("polydisperse%s_np%d" % ("" if mu is None else "_friction", args.np), bodies=n, steps=NSTEPS, overlap=ov,
               overlap_dumps=worst_pair, wall_overlap=worst_wall, e_excess=excess, e_rise=rise,
               e_end_over_scale=float((e[-1] - e[0]) / scale),
               heavy_z_end="%.3g-%.3g" % (zheavy.min(), zheavy.max()),
@@ -111,7 +131,7 @@ def test():
     # with the largest speed this very scene reaches (measured above) and a margin of 1.5.
     vmax = float(th["c_vmax"].max())
     skin = SKIN_RULE_MARGIN * 4.0 * H * vmax
-    text = sc.deck("data.poly", NSTEPS, H, skin, "tol %g %s" % (TOL, walls),
+    text = sc.deck("data.poly", NSTEPS, H, skin, "%s %s" % (tol_kw, walls),
                    boundary="f f f", gravity=G)
     label = "polydisperse, skin %.4g = %.1f x 4 h v_max (v_max %.4g)" % (skin, SKIN_RULE_MARGIN, vmax)
     try:
@@ -122,7 +142,7 @@ def test():
     else:
         chk(True, "%s: ran %d steps without ERROR" % (label, NSTEPS))
         ov2 = sc.check_common(th2, n, TOL, label, check=chk)
-        sc.report("polydisperse_skin_rule_np%d" % args.np, skin=skin, overlap=ov2,
+        sc.report("polydisperse%s_skin_rule_np%d" % ("" if mu is None else "_friction", args.np), skin=skin, overlap=ov2,
                   seconds=round(res2.seconds, 1))
     chk.finish()
 
