@@ -7,7 +7,7 @@ the mean height of the spheres and the kinetic energy per sphere; cost: the loop
 time the run took to come to rest (kinetic energy per sphere below 1e-6 m g d). Writes
 results/friction_front.csv and .md and a plot of the mean height against the loop time.
 
-  python3 bench/friction_front/front.py [--quick] [--jobs 2] [--reuse] [--scene settle20]
+  python3 bench/studies/friction_front/front.py [--quick] [--jobs 2] [--reuse] [--scene settle20]
 """
 
 import argparse
@@ -23,12 +23,12 @@ from pathlib import Path
 import numpy as np
 
 HERE = Path(__file__).resolve().parent
-ROOT = HERE.parent.parent
-sys.path.insert(0, str(HERE.parent / "perf"))
+ROOT = HERE.parents[2]
+sys.path.insert(0, str(ROOT / "bench" / "perf"))
 import decks  # noqa: E402
 import scenes  # noqa: E402
 
-_spec = importlib.util.spec_from_file_location("acc_lmp", str(HERE.parent / "accuracy" / "lmp.py"))
+_spec = importlib.util.spec_from_file_location("acc_lmp", str(ROOT / "bench" / "accuracy" / "lmp.py"))
 lmp = importlib.util.module_from_spec(_spec)
 _spec.loader.exec_module(lmp)
 

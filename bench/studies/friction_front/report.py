@@ -3,14 +3,14 @@ height at t = T), the time it took to come to rest, overlaps, iterations and the
 the ratios against the soft twins of the same run; the plot draws the mean height against the
 loop time (soft twins as squares, the fix's default circled (grey: the default before)).
 
-  python3 bench/friction_front/report.py [results/friction_front.csv]
+  python3 bench/studies/friction_front/report.py [results/friction_front.csv]
 """
 
 import csv
 import sys
 from pathlib import Path
 
-ROOT = Path(__file__).resolve().parents[2]
+ROOT = Path(__file__).resolve().parents[3]
 DEFAULT = ("apgd", 1e-2, 0.02)    # the fix's default with friction (solver, tol) at the deck's h
 OLD_DEFAULT = ("apgd", 1e-4, 0.02)    # before 2026-12-04
 

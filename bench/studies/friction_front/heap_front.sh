@@ -3,10 +3,10 @@
 # at tol 1e-2, 1e-3, 1e-4 and by its soft twin (pair_style granular), each with three seeds of
 # fix pour: flank and cone angles (examples/heap/heap_angle.py) and loop times, one process.
 # Writes bench/results/friction_front_heap.csv.
-#   bench/friction_front/heap_front.sh [--quick]      (--quick: 400 spheres to t = 30, one seed)
+#   bench/studies/friction_front/heap_front.sh [--quick]      (--quick: 400 spheres to t = 30, one seed)
 set -euo pipefail
-# shellcheck source=../common.sh
-source "$(dirname "${BASH_SOURCE[0]}")/../common.sh" friction_front_heap_ "$@"
+# shellcheck source=../../common.sh
+source "$(dirname "${BASH_SOURCE[0]}")/../../common.sh" friction_front_heap_ "$@"
 HEAP="$ROOT/examples/heap"
 SEEDS=(4767548 1234567 7654321); EXTRA=()
 [ "$MODE" = quick ] && { SEEDS=(4767548); EXTRA=(-var npour 400 -var tend 30); }
