@@ -412,14 +412,19 @@ run             {n}
 """
 
 
-def gas(args):
+def gas_scene():
+    """216 spheres converging on themselves, in a box with room around the cube."""
     scene = sd.gas(n_side=6, converge=0.6, seed=4)
-    wd = lr.fresh_workdir("%s/gas" % args.workdir)
-    # a box with room around the cube (boundary f, no walls), and random spins
     box = scene.box.copy()
     box[:, 0] -= 5.0
     box[:, 1] += 5.0
-    scene = scene._replace(box=box)
+    return scene._replace(box=box)
+
+
+def gas(args):
+    wd = lr.fresh_workdir("%s/gas" % args.workdir)
+    # a box with room around the cube (boundary f, no walls), and random spins
+    scene = gas_scene()
     sd.write_data(wd / "gas.data", scene, "friction test: spinning gas")
     rng = np.random.default_rng(7)
     w0 = rng.uniform(-2.0, 2.0, (len(scene.diameter), 3))
@@ -478,11 +483,7 @@ def default_tol(args):
                            ("frictionless", "", "tol 0.0001;"),
                            ("friction_tol_given", "friction 0.5 tol 1e-4", "tol 0.0001;")):
         wd = lr.fresh_workdir("%s/default_tol_%s" % (args.workdir, name))
-        scene = sd.gas(n_side=6, converge=0.6, seed=4)
-        box = scene.box.copy()
-        box[:, 0] -= 5.0
-        box[:, 1] += 5.0
-        sd.write_data(wd / "gas.data", scene._replace(box=box), "friction test: default tol")
+        sd.write_data(wd / "gas.data", gas_scene(), "friction test: default tol")
         deck = GAS.format(n=40).replace("hardcontact friction 0.5 tol 1e-8",
                                         "hardcontact %s maxiter 1" % kw)
         lr.run_deck(args.lmp, deck, args.np, wd, timeout=args.timeout)
