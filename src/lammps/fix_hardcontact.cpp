@@ -88,12 +88,16 @@ FixHardContact::FixHardContact(LAMMPS *lmp, int narg, char **arg) :
     regions_(lmp, groupbit, std::move(options_.wall_regions)), obstacles_(walls_, regions_),
     history_(memory, history_values(options_)),
     step_(lmp, groupbit, ops_, reach_, {&pairs_, &walls_, &regions_}), integrate_(lmp, groupbit),
-    outputs_(lmp, this, options_.has_friction())
+    outputs_(lmp, this, options_.has_friction()), virial_(lmp)
 {
   walls_.check_in_box();
   integrate_.set_inertia(options_.disc ? 0.5 : 0.4);
 
   time_integrate = 1;
+  // the contact forces in pressure and stress, as LAMMPS's constraint fixes do (fix_modify
+  // virial no turns it off)
+  hardcontact::compat::offer_virial(this);
+  for (double &v : virial) v = 0.0;
   force_reneighbor = 1;    // rebuilds are forced before a step could outrun the skin
   next_reneighbor = -1;
 
@@ -145,7 +149,8 @@ FixHardContact::~FixHardContact()
 
 int FixHardContact::setmask()
 {
-  return INITIAL_INTEGRATE | POST_NEIGHBOR;
+  // POST_FORCE: the per-atom virial into vatom after the step's sorting and migration
+  return INITIAL_INTEGRATE | POST_NEIGHBOR | POST_FORCE;
 }
 
 void FixHardContact::init()
@@ -190,9 +195,13 @@ void FixHardContact::post_neighbor()
   integrate_.store_build_positions();
 }
 
-// Step 0: no solve yet, but the diagnostics describe the positions the run starts from.
-void FixHardContact::setup(int)
+// Step 0: no solve yet, but the diagnostics describe the positions the run starts from. The
+// virial is the last step's (zero before the first run's first step).
+void FixHardContact::setup(int vflag)
 {
+  start_virial(vflag);
+  if (vflag_global) std::memcpy(virial, virial_.last_global(), sizeof(virial));
+  post_force(vflag);
   ops_.take_times();    // HARDCONTACT_COMM_TIMES counts from here
   walls_.init_positions();    // moving walls where their variables put them at this step
   regions_.at_current_step();    // moving regions likewise
@@ -204,8 +213,9 @@ void FixHardContact::setup(int)
 }
 
 // One step of scheme (S) (step.h), then its outputs at q^n, then q^{n+1} = q^n + h u^{n+1}.
-void FixHardContact::initial_integrate(int)
+void FixHardContact::initial_integrate(int vflag)
 {
+  start_virial(vflag);
   hardcontact::StepEffects effects;
   effects.restitution = &options_.restitution;
   effects.bounce_vmin = options_.bounce_vmin;
@@ -227,8 +237,36 @@ void FixHardContact::initial_integrate(int)
   if (options_.warmstart) history_resized();
   outputs_.record_step(result, step_.problem(), step_.mu(), step_.block(), step_.u(),
                        obstacles_, options_.settings);
+  if (vflag_global || vflag_atom) {
+    virial_.tally(step_.problem(), step_.mu(), step_.block(), step_.u(), update->dt, obstacles_,
+                  vflag_global ? virial : nullptr, vflag_atom != 0);
+    if (vflag_atom) history_resized();    // the first per-atom tally adds its values
+  }
   const int spins = step_.block() > 1 ? step_.problem().n_bodies() : -1;
   if (integrate_.move(step_.u(), spins)) next_reneighbor = update->ntimestep;
+}
+
+void FixHardContact::start_virial(int vflag)
+{
+  if (vflag && hardcontact::compat::virial_on(this)) {
+    v_setup(vflag);
+  } else {
+    evflag = 0;
+    vflag_global = vflag_atom = 0;
+  }
+}
+
+// The per-atom virial of the step's contacts (computed in initial_integrate, kept per atom
+// through the sorting and migration since) where compute stress/atom reads it.
+void FixHardContact::post_force(int)
+{
+  if (!vflag_atom) return;
+  if (atom->nmax > maxvatom) {
+    maxvatom = atom->nmax;
+    memory->destroy(vatom);
+    memory->create(vatom, maxvatom, hardcontact::ContactVirial::kComponents, "hardcontact:vatom");
+  }
+  virial_.copy_per_atom(vatom);
 }
 
 // The step with the developers' dump of its problem (core/problem_dump.h): prefix.<step>, and
@@ -284,21 +322,24 @@ double FixHardContact::compute_vector(int n)
 double FixHardContact::memory_usage()
 {
   return outputs_.memory_usage() + step_.memory_usage() + solver_->memory_usage() +
-         history_.memory_usage();
+         history_.memory_usage() + virial_.memory_usage();
 }
 
 /* ---------------------------------------------------------------------- per-atom data */
 
-// What an atom carries when it migrates: its outputs, then its contact history.
+// What an atom carries when it migrates: its outputs, its per-atom virial once one was asked
+// for, then its contact history.
 void FixHardContact::history_resized()
 {
-  hardcontact::compat::set_exchange_size(
-      this, comm, outputs_.per_atom_columns() + history_.max_packed_size());
+  hardcontact::compat::set_exchange_size(this, comm,
+                                         outputs_.per_atom_columns() + virial_.exchange_values() +
+                                             history_.max_packed_size());
 }
 
 void FixHardContact::grow_arrays(int nmax)
 {
   outputs_.grow_per_atom(nmax);
+  virial_.grow(nmax);
   history_.grow(nmax);
   history_resized();
 }
@@ -307,12 +348,14 @@ void FixHardContact::copy_arrays(int i, int j, int)
 {
   const int n = outputs_.per_atom_columns();
   for (int k = 0; k < n; ++k) array_atom[j][k] = array_atom[i][k];
+  virial_.copy(i, j);
   history_.copy(i, j);
 }
 
 void FixHardContact::set_arrays(int i)
 {
   outputs_.clear_per_atom(i);
+  virial_.clear(i);
   history_.clear(i);
 }
 
@@ -320,14 +363,16 @@ int FixHardContact::pack_exchange(int i, double *buf)
 {
   const int n = outputs_.per_atom_columns();
   for (int k = 0; k < n; ++k) buf[k] = array_atom[i][k];
-  return n + history_.pack(i, buf + n);
+  const int m = n + virial_.pack(i, buf + n);
+  return m + history_.pack(i, buf + m);
 }
 
 int FixHardContact::unpack_exchange(int nlocal, double *buf)
 {
   const int n = outputs_.per_atom_columns();
   for (int k = 0; k < n; ++k) array_atom[nlocal][k] = buf[k];
-  return n + history_.unpack(nlocal, buf + n);
+  const int m = n + virial_.unpack(nlocal, buf + n);
+  return m + history_.unpack(nlocal, buf + m);
 }
 
 // The global state: a format tag, then the kept overlaps' state (core/kept_overlaps.h), so

@@ -6,6 +6,7 @@
 #include "fix.h"
 
 #include "contact_history.h"
+#include "contact_virial.h"
 #include "integrate.h"
 #include "keywords.h"
 #include "lammps_compat.h"
@@ -33,6 +34,7 @@ class FixHardContact : public Fix {
   void setup_post_neighbor() HARDCONTACT_LAMMPS_OVERRIDE;
   void post_neighbor() HARDCONTACT_LAMMPS_OVERRIDE;
   void initial_integrate(int) override;
+  void post_force(int) override;
   void post_run() override;
 
   double compute_vector(int) override;
@@ -72,6 +74,7 @@ class FixHardContact : public Fix {
   hardcontact::ContactStep step_;
   hardcontact::Integrate integrate_;
   hardcontact::Outputs outputs_;
+  hardcontact::ContactVirial virial_;
   // by wall index: a wall's own friction (wall ... friction mu), FixOptions::kByType for the
   // type's; empty when no wall has its own
   std::vector<double> wall_friction_;
@@ -84,6 +87,9 @@ class FixHardContact : public Fix {
   void report_comm_times();
 
   void history_resized();
+  // LAMMPS's v_init on every host: the virial is computed on this step (vflag_global,
+  // vflag_atom) only if a compute asked for it and fix_modify virial is on
+  void start_virial(int vflag);
   hardcontact::StepResult solve_and_dump(const hardcontact::StepEffects &effects);
 };
 

@@ -265,6 +265,30 @@ inline void forward_comm(LAMMPS_NS::Comm *comm, LAMMPS_NS::Fix *fix)
 #endif
 }
 
+// ------------------------------------------------------------------------- virial
+// The switch of a fix's virial in pressure and stress: LAMMPS's `fix_modify virial` sets
+// thermo_virial, and the fix says what it offers (global and per-atom); LIGGGHTS 3.8's computes
+// read virial_flag alone and its fix_modify has no virial keyword (the LIGGGHTS fix takes it).
+inline void offer_virial(LAMMPS_NS::Fix *fix)
+{
+#if HARDCONTACT_LIGGGHTS
+  fix->virial_flag = 1;
+#else
+  fix->thermo_virial = 1;
+  fix->virial_global_flag = 1;
+  fix->virial_peratom_flag = 1;
+#endif
+}
+
+inline bool virial_on(const LAMMPS_NS::Fix *fix)
+{
+#if HARDCONTACT_LIGGGHTS
+  return fix->virial_flag != 0;
+#else
+  return fix->thermo_virial != 0;
+#endif
+}
+
 // ------------------------------------------------------------------------- variables
 // After evaluating a variable outside thermo output: the computes it used must be invoked again
 // on the next step (Modify::addstep_compute). LIGGGHTS's Modify leaves the count of those

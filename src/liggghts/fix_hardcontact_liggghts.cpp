@@ -7,6 +7,8 @@
 #include "modify.h"
 #include "neighbor.h"
 
+#include <cstring>
+
 using namespace LAMMPS_NS;
 using namespace FixConst;
 
@@ -63,6 +65,17 @@ int FixHardContactLiggghts::pack_comm(int n, int *list, double *buf, int pbc_fla
 void FixHardContactLiggghts::unpack_comm(int n, int first, double *buf)
 {
   unpack_forward_comm(n, first, buf);
+}
+
+// fix_modify ID virial yes|no, as on LAMMPS (compat::offer_virial: virial_flag is the switch
+// LIGGGHTS's computes read)
+int FixHardContactLiggghts::modify_param(int narg, char **arg)
+{
+  if (std::strcmp(arg[0], "virial") != 0) return 0;
+  if (narg < 2 || (std::strcmp(arg[1], "yes") != 0 && std::strcmp(arg[1], "no") != 0))
+    error->all(FLERR, "Illegal fix_modify command: fix hardcontact virial takes yes or no");
+  virial_flag = std::strcmp(arg[1], "yes") == 0 ? 1 : 0;
+  return 2;
 }
 
 /* ---------------------------------------------------------------------- registration */
