@@ -74,7 +74,7 @@ _INT_DUMP_COLUMNS = {"id", "type", "mol", "proc", "procp1", "ix", "iy", "iz", "i
 
 
 def liggghts_deck(text):
-    """A LAMMPS deck of the tests as LIGGGHTS 3.8 runs it. Four commands differ, nothing else:
+    """A LAMMPS deck of the tests as LIGGGHTS 3.8 runs it. Five commands differ, nothing else:
       * `newton off` first: LIGGGHTS's granular neighbour lists hold a pair across processors
         on both only with newton off, which the fix requires there (as pair gran with history
         does; LIGGGHTS decks set it by convention);
@@ -82,8 +82,11 @@ def liggghts_deck(text):
         whole line, built here from the dump's columns (integers %d, the rest F);
       * `comm_modify KEYWORDS` is `communicate single KEYWORDS` there (vel yes, cutoff X);
       * `set ... omega 0 0 0` is left out (LIGGGHTS's set has no omega; atoms start without
-        spin); a deck setting a nonzero spin that way cannot run there (LammpsRunError).
-    Everything else (atom_style sphere, read_data, computes, restarts) LIGGGHTS reads as LAMMPS
+        spin); a deck setting a nonzero spin that way cannot run there (LammpsRunError);
+      * `compute ID group stress/atom NULL ...` loses its NULL (LIGGGHTS's stress/atom takes
+        no temperature ID) and `compute ID all pressure NULL ...` takes thermo_temp instead
+        (LIGGGHTS's pressure requires one; with the virial keyword it is not used).
+    Everything else (atom_style sphere, read_data, other computes, restarts) LIGGGHTS reads as LAMMPS
     does."""
     columns = {}
     out = ["newton          off    # added for LIGGGHTS (lammps_run.liggghts_deck)"]
@@ -94,6 +97,11 @@ def liggghts_deck(text):
             columns[words[1]] = [w for w in words[6:] if not w.startswith("#")]
         if words[:1] == ["comm_modify"]:
             line = " ".join(["communicate", "single"] + words[1:])
+        if len(words) >= 5 and words[0] == "compute" and words[4:5] == ["NULL"]:
+            if words[3] == "stress/atom":
+                line = " ".join(words[:4] + words[5:])
+            elif words[3] == "pressure":
+                line = " ".join(words[:4] + ["thermo_temp"] + words[5:])
         if words[:1] == ["set"] and "omega" in words:
             k = words.index("omega")
             spin = words[k + 1:k + 4]

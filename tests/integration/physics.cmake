@@ -80,6 +80,22 @@ hardcontact_deck_test(NAME phys_friction_nsgs_np1 SCRIPT integration/test_phys_f
 hardcontact_deck_test(NAME phys_friction_nsgs_np4 SCRIPT integration/test_phys_friction.py
                       NP 4 LABELS physics TIMEOUT 300 ARGS --solver nsgs HOSTS launcher)
 
+# the contact virial: a column at rest gives the hydrostatic stress/atom profile and pressure
+# exactly (frictionless and with friction; `fix_modify virial no` takes it out); a box
+# compressed by a moving wall gives the virial identity of each step and the wall's force over
+# its area as the mean pressure. Every rank count on the launcher; LIGGGHTS (newton off, its
+# own compute syntax) serially and at np 2; the plugin serially
+foreach(_np 1 2 4)
+  set(_hosts launcher)
+  if(_np EQUAL 1)
+    set(_hosts launcher modern liggghts)
+  elseif(_np EQUAL 2)
+    set(_hosts launcher liggghts)
+  endif()
+  hardcontact_deck_test(NAME phys_stress_np${_np} SCRIPT integration/test_phys_stress.py
+                        NP ${_np} LABELS physics TIMEOUT 300 HOSTS ${_hosts})
+endforeach()
+
 # the neighbor rebuild look-ahead under acceleration: a falling sphere with a skin 9 x its step
 hardcontact_deck_test(NAME phys_skin_lookahead SCRIPT integration/test_phys_skin_lookahead.py
                       NP 1 LABELS physics TIMEOUT 300 HOSTS launcher modern liggghts)
