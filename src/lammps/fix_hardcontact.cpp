@@ -177,6 +177,7 @@ void FixHardContact::init()
         "the whole contact operator): use apgd, pgs or uzawa with mpirun",
         options_.solver_name);
   reach_.init(this, HARDCONTACT_FIX_INSTANCE);
+  deck_checks_.check(lmp, *this, regions_.regions(), !options_.restitution.empty());
 }
 
 void FixHardContact::init_list(int, NeighList *ptr)

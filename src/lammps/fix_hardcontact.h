@@ -7,6 +7,7 @@
 
 #include "contact_history.h"
 #include "contact_virial.h"
+#include "deck_checks.h"
 #include "integrate.h"
 #include "keywords.h"
 #include "lammps_compat.h"
@@ -75,6 +76,7 @@ class FixHardContact : public Fix {
   hardcontact::Integrate integrate_;
   hardcontact::Outputs outputs_;
   hardcontact::ContactVirial virial_;
+  hardcontact::DeckChecks deck_checks_;    // the rest of the deck (deck_checks.h)
   // by wall index: a wall's own friction (wall ... friction mu), FixOptions::kByType for the
   // type's; empty when no wall has its own
   std::vector<double> wall_friction_;

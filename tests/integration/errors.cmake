@@ -17,3 +17,16 @@ endforeach()
 # LIGGGHTS: their decks need LAMMPS commands it lacks, atom_style sphere 1 and comm_modify)
 hardcontact_deck_test(NAME errors_fixed_bugs_np1 SCRIPT integration/test_errors.py NP 1
                       LABELS errors ARGS --known-bugs TIMEOUT 600)
+
+# guard rails for a half-converted soft deck (deck_checks.h): a granular pair style, fix
+# wall/gran on the fix's atoms, an open region wall each give one WARNING naming the line; an
+# integrator on a disjoint group and the converted deck none. Serially on every host, under
+# mpirun (shared atoms counted over ranks) on the launcher
+foreach(_np 1 2 4)
+  set(_hosts launcher)
+  if(_np EQUAL 1)
+    set(_hosts launcher modern liggghts)
+  endif()
+  hardcontact_deck_test(NAME deck_checks_np${_np} SCRIPT integration/test_deck_checks.py NP ${_np}
+                        LABELS errors TIMEOUT 300 HOSTS ${_hosts})
+endforeach()

@@ -150,6 +150,10 @@ CASES = [
                                         "atom_style      sphere\natom_modify     id no"),
          ["requires atom IDs", "atom_modify id no"],
          liggghts=["Illegal atom_modify command"]),    # LIGGGHTS atoms always have IDs
+    # a half-converted soft deck: its integrator left beside the fix (deck_checks.h)
+    case("second_integrator", deck(after_fix="fix             2 all nve/sphere"),
+         ["fix 2 (nve/sphere) also integrates 4 of its atoms", "twice per step",
+          "delete the line 'fix 2 ... nve/sphere'"], np4=True),
     # keyword syntax
     case("unknown_keyword", deck("frobnicate 3"),
          ["keyword 'frobnicate' is unknown", "use solver, tol, maxiter, rho", "wall"], np4=True),

@@ -46,6 +46,7 @@ class RegionWallSource : public ContactSource {
   // Gap of a sphere of this radius centred at x to the face of wall w (diagnostics).
   double gap(int w, const Vec3 &x, double radius) const;
   bool empty() const { return ids_.empty(); }
+  const std::vector<LAMMPS_NS::Region *> &regions() const { return regions_; }    // after init
 
  private:
   LAMMPS_NS::LAMMPS *lmp_;
