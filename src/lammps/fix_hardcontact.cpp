@@ -315,6 +315,25 @@ void FixHardContact::report_comm_times()
   if (logfile) std::fputs(line, logfile);
 }
 
+// fix_modify ID contacts pairs|walls|all: which active contacts the local array lists (all by
+// default). Output only: the solve and every other output are the same.
+int FixHardContact::modify_param(int narg, char **arg)
+{
+  if (std::strcmp(arg[0], "contacts") != 0) return 0;
+  using Rows = hardcontact::Outputs::LocalRows;
+  const char *value = narg > 1 ? arg[1] : "";
+  if (std::strcmp(value, "pairs") == 0) outputs_.set_local_rows(Rows::PAIRS);
+  else if (std::strcmp(value, "walls") == 0) outputs_.set_local_rows(Rows::WALLS);
+  else if (std::strcmp(value, "all") == 0) outputs_.set_local_rows(Rows::ALL);
+  else
+    hardcontact::compat::error_all(error, FLERR,
+                                   "Illegal fix_modify command: fix hardcontact contacts takes "
+                                   "pairs, walls or all (which active contacts the local array "
+                                   "lists), not '{}'",
+                                   value);
+  return 2;
+}
+
 double FixHardContact::compute_vector(int n)
 {
   return outputs_.vector(n);

@@ -38,6 +38,7 @@ class FixHardContact : public Fix {
   void post_force(int) override;
   void post_run() override;
 
+  int modify_param(int, char **) override;
   double compute_vector(int) override;
   double memory_usage() override;
 

@@ -145,7 +145,7 @@ void Outputs::per_atom_and_local(const ContactProblem &p, const std::vector<doub
     if (!is_wall(j) && j < nlocal) array_atom[j][0] += 1.0;
     if (here) {
       counts[1] += 1.0;
-      ++nrows;
+      if (listed(j)) ++nrows;
       if (block > 1) {
         const double *m = &mu[static_cast<size_t>(block) * c];
         const Vec3 ft = m[1] * p.tangent1[c] + m[2] * p.tangent2[c];
@@ -174,8 +174,8 @@ void Outputs::per_atom_and_local(const ContactProblem &p, const std::vector<doub
   fix_->size_local_rows = nrows;
   int m = 0;
   for (int c = 0; c < nc; ++c) {
-    if (normal_force(c) == 0.0 || !p.counted[c]) continue;
     const int j = p.body_j[c];
+    if (normal_force(c) == 0.0 || !p.counted[c] || !listed(j)) continue;
     double *row = fix_->array_local[m++];
     row[0] = atom->tag[p.body_i[c]];
     row[1] = is_wall(j) ? 0 : atom->tag[j];

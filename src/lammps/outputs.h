@@ -42,6 +42,11 @@ class Outputs : protected LAMMPS_NS::Pointers {
   Outputs(const Outputs &) = delete;
   Outputs &operator=(const Outputs &) = delete;
 
+  // Which active contacts the local array lists (fix_modify ID contacts pairs|walls|all): pair
+  // rows alone load as bonds in OVITO, which has no atom 0 for a wall row's j.
+  enum class LocalRows { ALL, PAIRS, WALLS };
+  void set_local_rows(LocalRows rows) { local_rows_ = rows; }
+
   double vector(int n) const { return diag_[n]; }
   double memory_usage() const;
   void grow_per_atom(int nmax);
@@ -73,6 +78,11 @@ class Outputs : protected LAMMPS_NS::Pointers {
   std::vector<Vec3> torque_;    // contact torque per owned atom (friction)
   std::vector<Vec3> u_free_;    // u_free then w_free (friction): the dissipation's mean slip
   int nlocal_rows_max_ = 0;
+  LocalRows local_rows_ = LocalRows::ALL;
+  bool listed(int j) const
+  {
+    return local_rows_ == LocalRows::ALL || (local_rows_ == LocalRows::WALLS) == is_wall(j);
+  }
 };
 
 }    // namespace hardcontact

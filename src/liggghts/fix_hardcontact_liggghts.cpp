@@ -68,10 +68,10 @@ void FixHardContactLiggghts::unpack_comm(int n, int first, double *buf)
 }
 
 // fix_modify ID virial yes|no, as on LAMMPS (compat::offer_virial: virial_flag is the switch
-// LIGGGHTS's computes read)
+// LIGGGHTS's computes read); the fix's own options (contacts) as on LAMMPS
 int FixHardContactLiggghts::modify_param(int narg, char **arg)
 {
-  if (std::strcmp(arg[0], "virial") != 0) return 0;
+  if (std::strcmp(arg[0], "virial") != 0) return FixHardContact::modify_param(narg, arg);
   if (narg < 2 || (std::strcmp(arg[1], "yes") != 0 && std::strcmp(arg[1], "no") != 0))
     error->all(FLERR, "Illegal fix_modify command: fix hardcontact virial takes yes or no");
   virial_flag = std::strcmp(arg[1], "yes") == 0 ? 1 : 0;

@@ -154,6 +154,11 @@ CASES = [
     case("second_integrator", deck(after_fix="fix             2 all nve/sphere"),
          ["fix 2 (nve/sphere) also integrates 4 of its atoms", "twice per step",
           "delete the line 'fix 2 ... nve/sphere'"], np4=True),
+    # fix_modify options of the fix (output only)
+    case("fix_modify_contacts_value", deck(after_fix="fix_modify 1 contacts bonds"),
+         ["fix hardcontact contacts takes pairs, walls or all", "not 'bonds'"], np4=True),
+    case("fix_modify_contacts_missing", deck(after_fix="fix_modify 1 contacts"),
+         ["fix hardcontact contacts takes pairs, walls or all"]),
     # keyword syntax
     case("unknown_keyword", deck("frobnicate 3"),
          ["keyword 'frobnicate' is unknown", "use solver, tol, maxiter, rho", "wall"], np4=True),

@@ -32,6 +32,8 @@ or under mpirun (--np). Five scenes, each from a deterministic data file or fixe
 (e) walls: 100 spheres thrown into a box with five walls: wall numbers and normals of the
     local rows follow the fix command, the per-atom forces add up to the wall rows' forces, and
     sum m dv = h (wall forces - weight) at every step.
+(f) fix_modify 1 contacts pairs / walls: (e) again; the local array then lists exactly (e)'s rows
+    with j > 0 (under dump_modify label BONDS, as OVITO reads bonds), resp. j = 0.
 
 Known bugs print 'KNOWN BUG ...' and pass; --known-bugs makes them fail (not registered in
 ctest)."""
@@ -62,7 +64,7 @@ def rows_of(frame):
 
 def read_local_tolerant(path):
     """dump local frames by step ({step: DumpFrame}); also reads empty frames without an
-    ENTRIES line."""
+    ENTRIES line, and frames labelled otherwise (dump_modify label BONDS: ITEM: BONDS)."""
     out = {}
     with open(str(path)) as f:
         lines = f.read().splitlines()
@@ -71,11 +73,12 @@ def read_local_tolerant(path):
         if lines[i].startswith("ITEM: TIMESTEP"):
             step = int(lines[i + 1])
             count = int(lines[i + 3])
+            label = "ITEM: " + lines[i + 2].split("NUMBER OF ", 1)[-1].strip() + " "
             j = i + 4
-            while j < len(lines) and not lines[j].startswith("ITEM: ENTRIES") \
+            while j < len(lines) and not lines[j].startswith(label) \
                     and not lines[j].startswith("ITEM: TIMESTEP"):
                 j += 1
-            if j < len(lines) and lines[j].startswith("ITEM: ENTRIES"):
+            if j < len(lines) and lines[j].startswith(label):
                 names = lines[j].split()[2:]
                 rows = [l.split() for l in lines[j + 1:j + 1 + count]]
                 cols = {n: np.array([float(r[k]) for r in rows]) for k, n in enumerate(names)}
@@ -314,12 +317,13 @@ neighbor        1.0 bin
 timestep        {dt}
 fix             g all gravity {g} vector 0 0 -1
 fix             1 all hardcontact wall xplane 0 {w} wall yplane 0 {w} wall zplane 0 NULL
+{modify}
 thermo_style    custom step f_1[4] f_1[6]
 thermo          1
 dump            a all custom 1 atoms.dump {atom_cols}
 dump_modify     a format float %.17g
 dump            l all local 1 local.dump {row_cols}
-dump_modify     l format float %.17g
+dump_modify     l format float %.17g {label}
 run             {steps}
 """
 
@@ -339,7 +343,8 @@ def part_e(args):
     planes = {1: 0.0, 2: width, 3: 0.0, 4: width, 5: 0.0}
     sd.write_data(wd / "pile.data", scene, "outputs test: 100 spheres thrown into a box")
     res = lr.run_deck(args.lmp, BOX_DECK.format(dt=dt, g=g, w=repr(width), steps=steps,
-                                                atom_cols=ATOM_COLS, row_cols=" ".join(ROW_COLS)),
+                                                atom_cols=ATOM_COLS, row_cols=" ".join(ROW_COLS),
+                                                modify="", label=""),
                       args.np, wd, timeout=args.timeout)
     th = res.thermo[0]
     atoms = {f.timestep: f for f in lr.read_dump(wd / "atoms.dump")}
@@ -381,6 +386,41 @@ def part_e(args):
              % worst_sum)
     lr.check(worst_balance < 1e-9, "(e) every step: sum m dv = h (wall forces - weight) (%.2g of "
              "the weight impulse)" % worst_balance)
+    part_f(args, wd, local, dict(dt=dt, g=g, w=repr(width), steps=steps, atom_cols=ATOM_COLS,
+                                 row_cols=" ".join(ROW_COLS)))
+
+
+def part_f(args, wd_e, local_all, fmt):
+    """fix_modify 1 contacts pairs|walls: scene (e) again, its local array restricted to the
+    pairs (labelled BONDS, as OVITO loads force chains) or to the wall rows: exactly the rows of
+    (e) with j > 0, resp. j = 0, step by step (the filter changes no solve); the global active
+    count f_1[4] stays the count of all rows."""
+    for which, label in (("pairs", "label BONDS"), ("walls", "")):
+        wd = lr.fresh_workdir("%s/f_contacts_%s" % (args.workdir, which))
+        res = lr.run_deck(args.lmp, BOX_DECK.format(modify="fix_modify 1 contacts %s" % which,
+                                                    label=label, **fmt),
+                          args.np, wd, files=[wd_e / "pile.data"], timeout=args.timeout)
+        th = res.thermo[0]
+        local = read_local_tolerant(wd / "local.dump")
+        rows = 0
+        for step in range(1, fmt["steps"] + 1):
+            empty = lr.DumpFrame(step, {}, None)
+            i, j, mu, nrm, wall = rows_of(local_all.get(step, empty))
+            assert len(i) == th["f_1[4]"][step], "(f) %s step %d: f_1[4] counts all rows" \
+                % (which, step)
+            keep = j > 0 if which == "pairs" else j == 0
+            want = sorted(zip(i[keep], j[keep], mu[keep], wall[keep]))
+            fi, fj, fmu, _, fwall = rows_of(local.get(step, empty))
+            got = sorted(zip(fi, fj, fmu, fwall))
+            assert got == want, "(f) step %d: contacts %s lists %d rows, (e) has %d such rows" \
+                % (step, which, len(got), len(want))
+            rows += len(got)
+        lr.check(rows > 0, "(f) contacts %s: %d rows over %d steps, exactly (e)'s rows with %s"
+                 % (which, rows, fmt["steps"], "j > 0" if which == "pairs" else "j = 0"))
+        if label:
+            text = (wd / "local.dump").read_text()
+            lr.check("ITEM: NUMBER OF BONDS" in text and "ITEM: BONDS" in text,
+                     "(f) dump_modify label BONDS: the header OVITO reads as bonds")
 
 
 # ------------------------------------------------------------------------------- (c)
