@@ -8,8 +8,10 @@
 #     .cache/lammps-headers/<version>/ (Debian's liblammps-dev ships only 34 headers and
 #     lacks e.g. neigh_request.h, lammpsplugin.h and the bundled fmt/ headers).
 #
-# Idempotent and silent when everything is already in place. Run as root (only the
-# installation steps need it). Set HARDCONTACT_SETUP_VERBOSE=1 to see what it checks.
+# Idempotent and silent when everything is already in place. Run it as yourself: the steps
+# that need root (apt-get, the apt sources) go through sudo (as_root in .ci/lib.sh); as root it
+# runs them directly. Debian only (it says so and changes nothing elsewhere).
+# Set HARDCONTACT_SETUP_VERBOSE=1 to see what it checks.
 set -euo pipefail
 
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
@@ -25,12 +27,9 @@ say() { printf 'setup: %s\n' "$*"; }
 verbose() { if [ "${HARDCONTACT_SETUP_VERBOSE:-0}" = 1 ]; then say "$@"; fi; }
 die() { printf 'setup: ERROR: %s\n' "$*" >&2; exit 1; }
 
-need_root() {
-  [ "$(id -u)" = 0 ] || die "$1 needs root; run 'sudo bash .ci/setup.sh' (or as root) once."
-}
-
-command -v dpkg-query >/dev/null && command -v apt-get >/dev/null \
-  || die "this script needs a Debian-based system (dpkg-query/apt-get not found)."
+# shellcheck source=lib.sh
+. "$ROOT/.ci/lib.sh"
+check_debian
 
 codename() {
   local c=""
@@ -43,9 +42,8 @@ CODENAME="$(codename)"
 APT_UPDATED=0
 apt_update() {
   [ "$APT_UPDATED" = 1 ] && return 0
-  need_root "apt-get update"
   say "apt-get update"
-  apt-get update -qq >/dev/null || die "apt-get update failed (no network access to the Debian archive?)"
+  as_root apt-get update -qq >/dev/null || die "apt-get update failed (no network access to the Debian archive?)"
   APT_UPDATED=1
 }
 
@@ -59,9 +57,8 @@ have_debsrc() {
   grep -qx "$CODENAME main" <<<"$t"
 }
 if ! have_debsrc; then
-  need_root "adding a deb-src entry"
   say "adding deb-src entry $SRC_LIST"
-  cat >"$SRC_LIST" <<EOF
+  as_root tee "$SRC_LIST" >/dev/null <<EOF
 Types: deb-src
 URIs: http://deb.debian.org/debian
 Suites: $CODENAME
@@ -79,10 +76,9 @@ for p in "${PACKAGES[@]}"; do
   grep -qx "$p installed" <<<"$status" || missing+=("$p")
 done
 if [ "${#missing[@]}" -gt 0 ]; then
-  need_root "installing ${missing[*]}"
   apt_update
   say "installing ${missing[*]}"
-  apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null \
+  as_root env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null \
     || die "apt-get install ${missing[*]} failed"
 fi
 verbose "packages present: ${PACKAGES[*]}"

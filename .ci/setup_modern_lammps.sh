@@ -8,7 +8,10 @@
 #   .cache/lammps-modern/<version>/src/      the LAMMPS src/ tree (headers for the plugin build)
 #   .cache/lammps-modern/<version>/bin/lmp   the binary (MPI, PLUGIN, GRANULAR, JPEG, PNG)
 #
-# Needs root only for apt (packages, the trixie deb-src entry). About 3 minutes on 2 cores.
+# Needs root only for apt (packages, the trixie deb-src entry), through sudo when run as a user
+# (as_root, .ci/lib.sh). About 3 minutes on 2 cores.
+# Any revision of trixie's LAMMPS 4 Feb 2025 source package (20250204+dfsg.1-2, a later -3 or
+# +deb13u1) is taken, the newest apt offers; its version.h must say "4 Feb 2025".
 # HARDCONTACT_MODERN_LAMMPS=0 skips it (the tests on the modern host are then not registered).
 set -euo pipefail
 
@@ -16,9 +19,9 @@ ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 CACHE_DIR="${HARDCONTACT_CACHE_DIR:-$ROOT/.cache}"
 JOBS="${HARDCONTACT_JOBS:-2}"
 SRC_PKG=lammps
-SRC_VERSION=20250204+dfsg.1-2        # trixie's lammps source package
+UPSTREAM=20250204                    # trixie's LAMMPS release: its source package's upstream version
 LAMMPS_DATE="4 Feb 2025"             # what its version.h must say
-DIR_VERSION=20250204
+DIR_VERSION=$UPSTREAM
 DEST="$CACHE_DIR/lammps-modern/$DIR_VERSION"
 STAMP="$DEST/.hardcontact-complete"
 SRC_LIST=/etc/apt/sources.list.d/debian-trixie-src.sources
@@ -28,9 +31,11 @@ export DEBIAN_FRONTEND=noninteractive
 
 say() { printf 'setup-modern-lammps: %s\n' "$*"; }
 die() { printf 'setup-modern-lammps: ERROR: %s\n' "$*" >&2; exit 1; }
-need_root() { [ "$(id -u)" = 0 ] || die "$1 needs root; run 'sudo bash .ci/setup_modern_lammps.sh' once."; }
+# shellcheck source=lib.sh
+. "$ROOT/.ci/lib.sh"
 
 [ "${HARDCONTACT_MODERN_LAMMPS:-1}" = 0 ] && { say "skipped (HARDCONTACT_MODERN_LAMMPS=0)"; exit 0; }
+check_debian
 
 # The cached build is trusted only if its version.h says the expected release and the binary
 # reports the packages the tests need.
@@ -58,23 +63,23 @@ missing=()
 for p in "${PACKAGES[@]}"; do grep -qx "$p installed" <<<"$status" || missing+=("$p"); done
 APT_UPDATED=0
 if [ "${#missing[@]}" -gt 0 ]; then
-  need_root "installing ${missing[*]}"
-  apt-get update -qq >/dev/null || die "apt-get update failed"
+  as_root apt-get update -qq >/dev/null || die "apt-get update failed"
   APT_UPDATED=1
   say "installing ${missing[*]}"
-  apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null \
+  as_root env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null \
     || die "apt-get install ${missing[*]} failed"
 fi
 
 # ---------------------------------------------------------------- the trixie source package
 # captured first: under pipefail, grep -q closing the pipe early would fail the pipeline
-have_src() { local t; t="$(apt-cache showsrc "$SRC_PKG" 2>/dev/null || true)";
-             grep -qxF "Version: $SRC_VERSION" <<<"$t"; }
-if ! have_src; then
+# The newest source version of that release apt offers (bookworm's own lammps is older).
+src_version() { apt-cache showsrc "$SRC_PKG" 2>/dev/null | sed -n 's/^Version: //p' \
+                  | newest_version_of "$UPSTREAM"; }
+SRC_VERSION="$(src_version || true)"
+if [ -z "$SRC_VERSION" ]; then
   if [ ! -f "$SRC_LIST" ]; then
-    need_root "adding the trixie deb-src entry"
     say "adding deb-src entry $SRC_LIST (source packages only; nothing is installed from trixie)"
-    cat >"$SRC_LIST" <<EOF
+    as_root tee "$SRC_LIST" >/dev/null <<EOF
 Types: deb-src
 URIs: http://deb.debian.org/debian
 Suites: trixie
@@ -82,9 +87,9 @@ Components: main
 Signed-By: /usr/share/keyrings/debian-archive-keyring.gpg
 EOF
   fi
-  need_root "apt-get update"
-  apt-get update -qq >/dev/null || die "apt-get update failed"
-  have_src || die "apt offers no source package $SRC_PKG=$SRC_VERSION (available: $(apt-cache showsrc "$SRC_PKG" 2>/dev/null | sed -n 's/^Version: //p' | tr '\n' ' '))"
+  as_root apt-get update -qq >/dev/null || die "apt-get update failed"
+  SRC_VERSION="$(src_version || true)"
+  [ -n "$SRC_VERSION" ] || die "apt offers no source package $SRC_PKG of LAMMPS $LAMMPS_DATE ($UPSTREAM*; available: $(apt-cache showsrc "$SRC_PKG" 2>/dev/null | sed -n 's/^Version: //p' | tr '\n' ' '))"
 fi
 
 mkdir -p "$CACHE_DIR/lammps-modern"

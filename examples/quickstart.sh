@@ -1,10 +1,16 @@
 #!/usr/bin/env bash
-# Quick start on a fresh Debian bookworm machine (as root): install what is needed, build,
-# and run the flagship example (a cluster of spheres hitting a wall) into out/flagship/.
+# Quick start on a fresh Debian bookworm machine: install what is needed, build, and run the
+# flagship example (a cluster of spheres hitting a wall) into out/flagship/. Run it as yourself
+# (apt-get goes through sudo) or as root; run with sudo, it gives build/, out/ and .cache/ back
+# to you when it ends.
 set -euo pipefail
 
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 cd "$ROOT"
+die() { printf 'quickstart: ERROR: %s\n' "$*" >&2; exit 1; }
+# shellcheck source=../.ci/lib.sh
+. "$ROOT/.ci/lib.sh"
+trap 'give_back_to_sudo_user "$ROOT/build" "$ROOT/out" "$ROOT/.cache"' EXIT
 
 bash .ci/setup.sh
 bash .ci/build.sh
