@@ -1,22 +1,17 @@
 #!/usr/bin/env python3
-"""NOT REGISTERED (fails with the fix as of 6397911): the neighbor-list rebuild look-ahead of
-fix hardcontact ignores that velocities change from one step to the next.
+"""The neighbour-list rebuild look-ahead of fix hardcontact under an acceleration, with LAMMPS's
+default neigh_modify (every 1 delay 0 check yes): the fix itself forces the rebuilds it needs.
 
 A single sphere (r = 0.5) falls under `fix gravity 2.0` with v_x = 0.9 onto
-`wall zplane 0.0 NULL`, h = 0.05, `neighbor 1.0 bin`. The largest move of any step before the
-landing is 0.11, so the skin is 9 x that (the documentation asks for 4 x). Expected: the run
-completes and the sphere rests on the floor. What happens: at step 20 the fix stops with
-"an atom moved 0.503115 since the last neighbor list build, more than half the skin (0.5) ...
-The largest move in one step was 0.109659: use 'neighbor 0.439 bin' (4 x that)" - advice
-smaller than the skin in use.
+`wall zplane 0.0 NULL`, h = 0.05, `neighbor 1.0 bin`; its largest move in a step before the
+landing is 0.11, the skin 9 x that. The run must complete and the sphere rest on the floor.
 
-Cause (src/lammps/integrate.cpp, Integrate::move): after the move of step n it
-forces a rebuild when disp + h |u^n| > skin/2, i.e. it assumes the next move equals this
-one. Under a force (or after a contact impulse that speeds an atom up) the next move is
-h |u^{n+1}| > h |u^n|: here at step 19 disp + h|u^19| = 0.498692 < 0.5 (no rebuild) and at
-step 20 disp = 0.503115 > 0.5 (error). Any skin can hit such a window (1.5 fails at step 38).
-A fix: bound the next move with a margin, e.g. rebuild when disp + 2 h max|u| > skin/2 (or
-add h^2 |f|/m), and make the error advice never smaller than the skin in use."""
+Once a regression (fixed since; the test was then not registered): the look-ahead assumed the
+next move equals the last one, so a sphere sped up by gravity could cross skin/2 between two
+checks and the fix stopped the run at step 20 with advice smaller than the skin in use. Now
+(src/lammps/integrate.cpp, Integrate::move) a rebuild is forced when the two largest
+displacements since the last build plus twice this step's move could reach the skin, and the
+error's advice is never below twice the skin in use."""
 
 import lammps_run as lr
 import physics_common as pc
