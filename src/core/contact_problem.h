@@ -146,16 +146,24 @@ struct ContactProblem {
   // moving wall's normal speed is in the gap, so only its tangential part is added here).
   // The contact point sits at +a_i n from centre i and -a_j n from centre j (the arms), so
   // spins add a_i n x w_i + a_j n x w_j.
+  // A pair held twice (across processes, or with a periodic image on one) is two rows with
+  // opposite normals and tangents (-t_1, t_2) that must evolve bit for bit as mirror images
+  // (Prop. 4: momentum exact). So the sum is taken as (u_j - u_i) + (spin terms), each part
+  // antisymmetric in (i, j) to the bit (IEEE subtraction and commuted additions are exact
+  // mirrors); summing the four terms one by one from -u_i rounds differently on the two rows,
+  // and stick/slip decisions amplify that into forces that no longer cancel.
   Vec3 slip_velocity(int c, const std::vector<Vec3> &u) const
   {
     const int i = body_i[c], j = body_j[c], nb = n_bodies();
     const Vec3 &n = normal[c];
+    if (!is_wall(j)) {
+      Vec3 v = u[j] - u[i];
+      if (rotates()) v += arm_i[c] * n.cross(u[nb + i]) + arm_j[c] * n.cross(u[nb + j]);
+      return v;
+    }
     Vec3 v = -u[i];
     if (rotates()) v += arm_i[c] * n.cross(u[nb + i]);
-    if (!is_wall(j)) {
-      v += u[j];
-      if (rotates()) v += arm_j[c] * n.cross(u[nb + j]);
-    } else if (!wall_velocity.empty()) {
+    if (!wall_velocity.empty()) {
       const Vec3 &w = wall_velocity[c];
       v += w - n.dot(w) * n;
     }
