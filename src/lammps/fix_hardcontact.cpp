@@ -37,9 +37,11 @@ hardcontact::FixOptions checked_options(LAMMPS *lmp, int narg, char **arg)
   if (o.has_rolling() && !hardcontact::FixOptions::any_positive(o.friction))
     lmp->error->all(FLERR, "Fix hardcontact rolling needs friction: add 'friction mu' (a "
                            "sphere that can slide does not roll)");
-  // The default solver: projected CG where the law is a bound (frictionless), apgd on the
-  // cones of friction (doc/performance.md: cg takes 0.5-0.7 x apgd's time on 3D piles)
-  if (o.solver_name.empty()) o.solver_name = o.has_friction() ? "apgd" : "cg";
+  // The default solver: projected CG where the law is a bound (frictionless: doc/performance.md,
+  // cg takes 0.5-0.7 x apgd's time on 3D piles); with friction nsgs sweeps and apgd where they
+  // stall (solvers/hybrid.h: a packing at rest with mobilised friction takes a handful of
+  // sweeps where apgd took hundreds of iterations)
+  if (o.solver_name.empty()) o.solver_name = o.has_friction() ? "hybrid" : "cg";
   // The default tolerance with friction (keywords.h): frictional solves converge slowly in a
   // rearranging packing (its contact forces are indeterminate), and the scenes' observables
   // (a pile's height, a heap's and a drum's angle) are the same at 1e-2 as at 1e-4
@@ -50,18 +52,18 @@ hardcontact::FixOptions checked_options(LAMMPS *lmp, int narg, char **arg)
                              "torque (the spheres spin): use atom_style sphere");
     if (!hardcontact::solver_has_friction(o.solver_name))
       hardcontact::compat::error_all(lmp->error, FLERR,
-                                     "Fix hardcontact solver {} has no friction: use nsgs, apgd, pgs or "
-                                     "uzawa with friction",
+                                     "Fix hardcontact solver {} has no friction: use hybrid (the "
+                                     "default with friction), apgd, nsgs, pgs or uzawa",
                                      o.solver_name);
   }
+  if (o.settings.subspace > 0 && o.has_friction())
+    lmp->error->all(FLERR, "Fix hardcontact subspace applies without friction only (with "
+                           "friction its start leaves the cone): remove subspace or friction");
   if (o.settings.subspace > 0 && o.solver_name != "cg" && o.solver_name != "apgd")
     hardcontact::compat::error_all(lmp->error, FLERR,
                                    "Fix hardcontact subspace applies to solvers cg and apgd (the "
                                    "defaults), not {}: remove subspace or use cg or apgd",
                                    o.solver_name);
-  if (o.settings.subspace > 0 && o.has_friction())
-    lmp->error->all(FLERR, "Fix hardcontact subspace applies without friction only (with "
-                           "friction its start leaves the cone): remove subspace or friction");
   // The default start of cg without friction: the span of the last 10 corrections. Loads and
   // shallow piles at rest take 8-20 x fewer iterations per step, deep piles and settles 3-6 %
   // fewer, for one product per step and 160 bytes per contact (doc/performance.md 10.7).

@@ -277,7 +277,7 @@ void parse_bounce(LAMMPS *lmp, char **values, int, FixOptions &o)
 }
 
 const Keyword keywords[] = {
-    {"solver", 1, 0, parse_solver, "solver name: cg (default without friction), apgd (default with friction), pgs, nsgs, uzawa or exact"},
+    {"solver", 1, 0, parse_solver, "solver name: cg (default without friction), hybrid (default with friction), apgd, nsgs, pgs, uzawa or exact"},
     {"tol", 1, 0, parse_tol, "tol value: row tolerance relative to the row scale, in (0, 1)"},
     {"maxiter", 1, 0, parse_maxiter, "maxiter N: at most N solver iterations per solve"},
     {"rho", 1, 0, parse_rho, "rho value: fixed solver step (omit: automatic)"},

@@ -4,7 +4,7 @@
 //  - a slow sphere sticks: it leaves the step rolling at 5/7 of its speed;
 //  - an oblique pair: tangential impulse <= mu x normal impulse, sticking below and sliding
 //    above the analytic threshold v_t / v_n = 7/2 mu; linear and angular momentum exact;
-//  - random packings: apgd, pgs, uzawa and nsgs agree, kinetic energy (spins included) never grows,
+//  - random packings: hybrid, apgd, pgs, uzawa and nsgs agree, kinetic energy (spins included) never grows,
 //    no overlap, every multiplier in its cone.
 #include "core_test_util.h"
 #include "random_config.h"
@@ -71,7 +71,7 @@ ContactProblem sphere_on_floor(double v0, double mu, double h, double g, double 
 TEST(Friction, SlidingSphereDeceleratesAndSpinsUp)
 {
   const double h = 0.01, g = 1.0, r = 0.5, mu = 0.3, v0 = 1.0;
-  for (const char *name : {"apgd", "pgs", "uzawa", "nsgs"}) {
+  for (const char *name : {"hybrid", "apgd", "pgs", "uzawa", "nsgs"}) {
     const ContactProblem p = sphere_on_floor(v0, mu, h, g, r);
     const Solved s = solve(p, name);
     const Vec3 u = s.u[0], w = s.u[1];
@@ -88,7 +88,7 @@ TEST(Friction, SlowSphereSticksAndRolls)
 {
   const double h = 0.01, g = 1.0, r = 0.5, mu = 0.5;
   const double v0 = 0.5 * 3.5 * mu * g * h;    // half the speed one step of friction can stop
-  for (const char *name : {"apgd", "pgs", "uzawa", "nsgs"}) {
+  for (const char *name : {"hybrid", "apgd", "pgs", "uzawa", "nsgs"}) {
     const ContactProblem p = sphere_on_floor(v0, mu, h, g, r);
     const Solved s = solve(p, name, 1e-10);
     EXPECT_NEAR(s.u[0].x(), 5.0 / 7.0 * v0, 1e-9) << name;
@@ -108,7 +108,7 @@ TEST(Friction, ObliquePairStickBelowSlideAboveThreshold)
         hctest::make_problem(h, {1.0, 1.0}, {Vec3(vn, vt, 0.0), Vec3::Zero()});
     hctest::add_pair(p, 0, 1, q[0], q[1], r, r);
     add_friction(p, {r, r}, mu);
-    for (const char *name : {"apgd", "pgs", "uzawa", "nsgs"}) {
+    for (const char *name : {"hybrid", "apgd", "pgs", "uzawa", "nsgs"}) {
       const Solved s = solve(p, name, 1e-10);
       const double jn = s.mu[0], jt = std::hypot(s.mu[1], s.mu[2]);
       EXPECT_NEAR(jn * h, 0.5 * vn, 1e-9) << name;    // inelastic: m_red v_n
@@ -149,7 +149,7 @@ TEST(Friction, AngularMomentumExactForAClosingPair)
                 I1 * w[1]);
   };
   const Vec3 L0 = angular(p.u_free, p.w_free);
-  for (const char *name : {"apgd", "pgs", "uzawa", "nsgs"}) {
+  for (const char *name : {"hybrid", "apgd", "pgs", "uzawa", "nsgs"}) {
     const Solved s = solve(p, name, 1e-10);
     ASSERT_GT(s.mu[0], 0.0) << name;
     const Vec3 L = angular({s.u[0], s.u[1]}, {s.u[2], s.u[3]});
@@ -184,7 +184,7 @@ TEST(Friction, SolversAgreeOnRandomPackings)
     u_free.insert(u_free.end(), w.begin(), w.end());
     const double e_free = kinetic2(c.p, u_free);
     const Solved a = solve(c.p, "apgd", tol);
-    for (const char *name : {"apgd", "pgs", "uzawa", "nsgs"}) {
+    for (const char *name : {"hybrid", "apgd", "pgs", "uzawa", "nsgs"}) {
       const Solved s = solve(c.p, name, tol);
       EXPECT_LE(kinetic2(c.p, s.u), e_free * (1.0 + 1e-12)) << name;
       double worst = 0.0;
@@ -274,7 +274,7 @@ TEST(Friction, RollingSolversAgreeAndConserveMomentum)
     P0 += m * c.p.u_free[b];
     L0 += m * c.q[b].cross(c.p.u_free[b]) + w[b] / c.p.inv_inertia[b];
   }
-  for (const char *name : {"apgd", "pgs", "uzawa", "nsgs"}) {
+  for (const char *name : {"hybrid", "apgd", "pgs", "uzawa", "nsgs"}) {
     const Solved s = run(name);
     EXPECT_LE(kinetic2(c.p, s.u), e_free * (1.0 + 1e-12)) << name;
     double worst = 0.0;

@@ -125,7 +125,7 @@ TEST_P(EnergyOfInexactSolves, RestingRowFromAWrongWarmStart)
 }
 
 INSTANTIATE_TEST_SUITE_P(Solvers, EnergyOfInexactSolves,
-                         ::testing::Values("uzawa", "apgd", "pgs", "cg", "nsgs"));
+                         ::testing::Values("uzawa", "apgd", "pgs", "cg", "nsgs", "hybrid"));
 
 class RestingColumn : public ::testing::TestWithParam<std::string> {};
 
@@ -159,6 +159,6 @@ TEST_P(RestingColumn, VelocityErrorRelativeToTheKick)
   }
 }
 
-INSTANTIATE_TEST_SUITE_P(Solvers, RestingColumn, ::testing::Values("uzawa", "apgd", "pgs", "cg", "exact", "nsgs"));
+INSTANTIATE_TEST_SUITE_P(Solvers, RestingColumn, ::testing::Values("uzawa", "apgd", "pgs", "cg", "exact", "nsgs", "hybrid"));
 
 }    // namespace

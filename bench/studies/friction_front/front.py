@@ -114,12 +114,16 @@ def main():
     runs = []
     grid = [("apgd", 1e-4, 0.02), ("apgd", 1e-3, 0.02), ("apgd", 1e-2, 0.02),
             ("apgd", 1e-4, 0.04), ("apgd", 1e-3, 0.04), ("apgd", 1e-2, 0.04), ("apgd", 1e-2, 0.08)]
+    # hybrid (nsgs sweeps, apgd when they stall; solvers/hybrid.h) at the same tolerances
+    grid += [("hybrid", 1e-4, 0.02), ("hybrid", 1e-3, 0.02), ("hybrid", 1e-2, 0.02),
+             ("hybrid", 1e-2, 0.04)]
     # quick only: a tight reference and nsgs. On the full pile both take more than 30 minutes
     # (at tol 1e-6 most solves of the creeping pile stop at maxiter: 322 by t = 19.5)
     if a.quick:
         grid += [("apgd", 1e-6, 0.02), ("nsgs", 1e-3, 0.02)]
     if a.scene == "settle20":
-        grid = [("apgd", 1e-2, 0.02), ("apgd", 1e-2, 0.04)]
+        grid = [("apgd", 1e-2, 0.02), ("apgd", 1e-2, 0.04), ("hybrid", 1e-2, 0.02),
+                ("hybrid", 1e-3, 0.02), ("hybrid", 1e-4, 0.02)]
     for solver, tol, h in grid:
         rid = "%s_tol%g_h%g" % (solver, tol, h)
         runs.append((rid, "hard", hard_deck(scene, str(data), solver, tol, h, T),

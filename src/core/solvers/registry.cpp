@@ -2,6 +2,7 @@
 #include "../solver.h"
 #include "apgd.h"
 #include "exact.h"
+#include "hybrid.h"
 #include "nsgs.h"
 #include "projected_cg.h"
 #include "pgs.h"
@@ -29,6 +30,8 @@ const Entry registry[] = {
     {"nsgs", [] { return std::unique_ptr<Solver>(new Nsgs()); },
      [] { return std::unique_ptr<Solver>(new NsgsFriction()); },
      [] { return std::unique_ptr<Solver>(new NsgsRolling()); }},
+    {"hybrid", [] { return std::unique_ptr<Solver>(new Hybrid()); }, [] { return std::unique_ptr<Solver>(new HybridFriction()); },
+     [] { return std::unique_ptr<Solver>(new HybridRolling()); }},
     {"cg", [] { return std::unique_ptr<Solver>(new ProjectedCg()); }, nullptr, nullptr},
     {"exact", [] { return std::unique_ptr<Solver>(new Exact()); }, nullptr, nullptr},
 };
