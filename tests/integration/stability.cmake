@@ -92,3 +92,15 @@ if(TARGET lmp_hardcontact)
   set_tests_properties(stab_sanitize PROPERTIES LABELS "sanitize;soak" TIMEOUT 5400 PROCESSORS 2
     ENVIRONMENT "OMPI_ALLOW_RUN_AS_ROOT=1;OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1")
 endif()
+
+# frictional hard cases (issue 36): a crystal bed on a floor with friction, dragged to speed by
+# the floor sliding in its own plane (conveyor, a wall-driven rigid bed) or sliding to rest
+# (slide); Coulomb's deceleration, the exact momentum balance with the floor's forces, then at
+# rest in the floor's frame with a handful of iterations per step; 1 and 2 ranks
+foreach(_case conveyor slide)
+  foreach(_np 1 2)
+    hardcontact_deck_test(NAME stab_friction_${_case}_np${_np} HOSTS launcher
+      SCRIPT integration/test_stab_friction.py NP ${_np} LABELS stability
+      ARGS --case ${_case} --timeout 200 TIMEOUT 300)
+  endforeach()
+endforeach()
