@@ -54,6 +54,15 @@ class Solver {
   virtual SolveReport solve(const ContactProblem &p, const SolverSettings &s,
                             DistributedOps &ops, std::vector<double> &mu,
                             std::vector<Vec3> &u) = 0;
+  // What a solver carries from one solve to the next besides the multipliers (the host's
+  // warm start), for restart files, so that a split run solves as the unsplit one:
+  // kStateSize doubles (unused ones 0; a solver with nothing to carry ignores them).
+  static constexpr int kStateSize = 2;
+  virtual void save_state(double *state) const
+  {
+    for (int k = 0; k < kStateSize; ++k) state[k] = 0.0;
+  }
+  virtual void load_state(const double *) {}
 };
 
 // The law of every row: the paper's (laws/normal.h, 1 multiplier per row), Coulomb friction

@@ -397,22 +397,27 @@ int FixHardContact::unpack_exchange(int nlocal, double *buf)
   return m + history_.unpack(nlocal, buf + m);
 }
 
-// The global state: a format tag, then the kept overlaps' state (core/kept_overlaps.h), so
-// that a split run keeps and clears overlaps in the same steps as the unsplit one. LAMMPS
+// The global state: a format tag, then the kept overlaps' state (core/kept_overlaps.h) and the
+// solver's (solver.h: the hybrid's back-off), so that a split run keeps and clears overlaps and
+// picks its solvers in the same steps as the unsplit one. LAMMPS
 // calls this on every process; only the first writes (the others have no file).
 namespace {
-constexpr double kGlobalStateFormat = 1.0;
+constexpr double kGlobalStateFormat = 2.0;
+// the tag, the kept overlaps' back-off and budget, the solver's state (hybrid: its back-off)
+constexpr int kGlobalStateSize =
+    1 + hardcontact::KeptOverlaps::kStateSize + hardcontact::Solver::kStateSize;
 }
 
 void FixHardContact::write_restart(FILE *fp)
 {
-  double list[1 + hardcontact::KeptOverlaps::kStateSize];
+  double list[kGlobalStateSize];
   list[0] = kGlobalStateFormat;
   step_.kept_overlaps().save_state(list + 1);
+  solver_->save_state(list + 1 + hardcontact::KeptOverlaps::kStateSize);
   if (comm->me == 0) {
     const int size = static_cast<int>(sizeof(list));
     fwrite(&size, sizeof(int), 1, fp);
-    fwrite(list, sizeof(double), 1 + hardcontact::KeptOverlaps::kStateSize, fp);
+    fwrite(list, sizeof(double), kGlobalStateSize, fp);
   }
 }
 
@@ -421,11 +426,12 @@ void FixHardContact::write_restart(FILE *fp)
 // them.
 void FixHardContact::restart(char *buf)
 {
-  double list[1 + hardcontact::KeptOverlaps::kStateSize];
+  double list[kGlobalStateSize];
   std::memcpy(list, buf, sizeof(double));    // the tag first: another format may be shorter
   if (list[0] != kGlobalStateFormat) return;
   std::memcpy(list, buf, sizeof(list));
   step_.kept_overlaps().load_state(list + 1);
+  solver_->load_state(list + 1 + hardcontact::KeptOverlaps::kStateSize);
 }
 
 // Restart files hold the contact history, so a split run starts its next solve where the

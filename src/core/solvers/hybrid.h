@@ -24,6 +24,17 @@ class HybridSolver : public Solver {
  public:
   SolveReport solve(const ContactProblem &p, const SolverSettings &s, DistributedOps &ops,
                     std::vector<double> &mu, std::vector<Vec3> &u) override;
+  // the back-off (restart files)
+  void save_state(double *state) const override
+  {
+    state[0] = skip_;
+    state[1] = backoff_;
+  }
+  void load_state(const double *state) override
+  {
+    skip_ = static_cast<int>(state[0]);
+    backoff_ = state[1] >= 1.0 ? static_cast<int>(state[1]) : 1;
+  }
   double memory_usage() const override
   {
     return sweeps_.memory_usage() + gradient_.memory_usage();

@@ -34,6 +34,13 @@ class NsgsSolver : public IterativeSolver<Law> {
 
  protected:
   using IterativeSolver<Law>::B;
+  // Every solve starts with a forward sweep: the solve depends on nothing but its problem and
+  // start (a run split by a restart file solves as the unsplit one).
+  void start(const SolverSettings &s, std::vector<double> &mu, std::vector<Vec3> &u) override
+  {
+    sweeps_ = 0;
+    IterativeSolver<Law>::start(s, mu, u);
+  }
   void rows_changed(const SolverSettings &) override;
   bool step(const SolverSettings &s, std::vector<double> &mu, std::vector<Vec3> &u) override;
   // The residual of the true law: each row's shift is set to Law::shift of its iterate, so the
