@@ -24,7 +24,9 @@ read on one rank (same tolerances).
 
 The pile runs three times: frictionless, with `friction 0.5` (the history then carries the
 tangential forces too, and the warm start after read_restart must bring them back), and with
-`restitution 0.5 cohesion 0.2`.
+`restitution 0.5 cohesion 0.2`. With friction the default solver sweeps Gauss-Seidel in the
+neighbour list's order, which a new run rebuilds: there the restart is held to the run split in
+one process (tol), and to the straight run within 100 x tol as the cold start.
 
 Crystal: 216 touching spheres stacked as an FCC crystal slide sideways on a frictionless floor
 (periodic in x and y), so that under mpirun atoms cross processor boundaries with their
@@ -266,10 +268,25 @@ def pile(args, label="pile", extra=""):
     dx_t, dv_t = float(np.abs(xs - xt).max()), float(np.abs(vs - vt).max())
     print("straight vs restart: max |dx| = %.3g, max |dv| = %.3g" % (dx_r, dv_r))
     print("straight vs run 20 + run 20: max |dx| = %.3g, max |dv| = %.3g" % (dx_t, dv_t))
-    lr.check(dx_r <= TOL * size, "positions after the restart within tol * size = %.3g of the "
-             "straight run (%.3g)" % (TOL * size, dx_r))
-    lr.check(dv_r <= TOL * size / DT, "velocities after the restart within tol * size / h = %.3g "
-             "of the straight run (%.3g)" % (TOL * size / DT, dv_r))
+    if "friction" in extra:
+        # With friction the default solver (hybrid) sweeps Gauss-Seidel in the neighbour list's
+        # order, and a new run starts with a list rebuilt in another order: a run split in one
+        # process already differs from the straight run by tolerance-sized amounts, which 20
+        # steps amplify (as for the cold start below). What the restart must reproduce is that
+        # split: to the tolerance (it is checked to the bit-level below too); the straight run
+        # within the cold start's 100 x tol.
+        dx_ref, dv_ref = float(np.abs(xt - xr).max()), float(np.abs(vt - vr).max())
+        lr.check(dx_ref <= TOL * size and dv_ref <= TOL * size / DT,
+                 "positions and velocities after the restart within tol * size (/ h) of the run "
+                 "split in one process (dx %.3g, dv %.3g)" % (dx_ref, dv_ref))
+        lr.check(dx_r <= 100 * TOL * size and dv_r <= 100 * TOL * size / DT,
+                 "and within 100 x tol * size (/ h) of the straight run (dx %.3g, dv %.3g)"
+                 % (dx_r, dv_r))
+    else:
+        lr.check(dx_r <= TOL * size, "positions after the restart within tol * size = %.3g of "
+                 "the straight run (%.3g)" % (TOL * size, dx_r))
+        lr.check(dv_r <= TOL * size / DT, "velocities after the restart within tol * size / h = "
+                 "%.3g of the straight run (%.3g)" % (TOL * size / DT, dv_r))
     # warm start: the restart file holds the last multipliers of fix 1 (redefined with the same
     # ID), so the first solve after it starts where the unsplit run's does
     it_s = th["f_1[1]"][list(th["Step"]).index(HALF + 1)]
@@ -300,9 +317,11 @@ def pile(args, label="pile", extra=""):
                     log_name="log.split2_np1", timeout=args.timeout)
         ids_1, x1, v1 = final_state(wd / "split2_np1.dump", STEPS)
         dx_1, dv_1 = float(np.abs(xs - x1).max()), float(np.abs(vs - v1).max())
-        lr.check(np.array_equal(ids_s, ids_1) and dx_1 <= TOL * size and dv_1 <= TOL * size / DT,
-                 "the restart file written on %d ranks, read on 1 rank: within tol * size "
-                 "(dx %.3g, dv %.3g)" % (args.np, dx_1, dv_1))
+        f = 100.0 if "friction" in extra else 1.0    # Gauss-Seidel order: see above
+        lr.check(np.array_equal(ids_s, ids_1) and dx_1 <= f * TOL * size
+                 and dv_1 <= f * TOL * size / DT,
+                 "the restart file written on %d ranks, read on 1 rank: within %g x tol * size "
+                 "(dx %.3g, dv %.3g)" % (args.np, f, dx_1, dv_1))
     lr.check(dx_r <= max(10.0 * dx_t, 1e-12) and dv_r <= max(10.0 * dv_t, 1e-10),
              "the restart differs from the straight run no more than a second run in the same "
              "process does (dx %.3g vs %.3g, dv %.3g vs %.3g)" % (dx_r, dx_t, dv_r, dv_t))
