@@ -51,19 +51,18 @@ def bed():
     return np.array(pts), side
 
 
-def run_case(args, case, checks):
+def scene(case, data, keywords="", dumps=True):
+    """Writes the bed's data file (at rest, or at V for the slide) and returns (deck text, atoms,
+    box side, floor speed at the end). keywords go first on the fix line (solver, tol);
+    dumps: the atoms, spins and local rows the checks read. Also used by
+    bench/studies/friction_hybrid/beds.py."""
     x, side = bed()
     n = len(x)
     v = np.zeros_like(x)
     if case == "slide":
         v[:, 0] = V
-        floor_speed, t_move = 0.0, None
-    else:
-        floor_speed, t_move = V, T_START
-    wd = lr.fresh_workdir("%s/%s" % (args.workdir, case))
-    data = wd.parent / ("bed_%s.data" % case)
     sc.write_data(str(data), ((0.0, side), (0.0, side), (-1.0, 12.0)), np.full(n, R), 1.0, x, v)
-    xf = ("%r*(time-%r)*(time>%r)" % (V, T_START, T_START)) if t_move else "0.0"
+    xf = ("%r*(time-%r)*(time>%r)" % (V, T_START, T_START)) if case == "conveyor" else "0.0"
     forces = ("variable        xf equal %s\n"
               "region          floor plane 0 0 0 0 0 1 side in move v_xf NULL NULL" % xf)
     local = ("\ndump            l all local 1 dump.local " +
@@ -73,9 +72,17 @@ def run_case(args, case, checks):
              "\ndump_modify     w format float %.16g sort id")
     nsteps = int(round(T_END / H))
     text = sc.deck(data.name, nsteps, H, 0.3,
-                   keywords="friction %r wall region floor friction %r" % (MU_PAIR, MU_FLOOR),
-                   boundary="p p f", gravity=G, dump_every=250, extra_forces=forces,
-                   extra_dumps=local)
+                   keywords="%s friction %r wall region floor friction %r"
+                   % (keywords, MU_PAIR, MU_FLOOR),
+                   boundary="p p f", gravity=G, dump_every=250 if dumps else 0,
+                   extra_forces=forces, extra_dumps=local if dumps else "")
+    return text, n, side, (V if case == "conveyor" else 0.0)
+
+
+def run_case(args, case, checks):
+    wd = lr.fresh_workdir("%s/%s" % (args.workdir, case))
+    data = wd.parent / ("bed_%s.data" % case)
+    text, n, side, floor_speed = scene(case, data)
     res, th = sc.run(args, text, wd, str(data))
     label = case
     sc.check_common(th, n, TOL, label, check=checks)

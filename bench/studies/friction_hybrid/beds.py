@@ -15,33 +15,16 @@ from pathlib import Path
 ROOT = Path(__file__).resolve().parents[3]
 sys.path.insert(0, str(ROOT / "tests" / "integration"))
 import lammps_run as lr           # noqa: E402
-import stability_common as sc     # noqa: E402
 import test_stab_friction as bedtest    # noqa: E402  the scene (bed(), its constants)
 
-import numpy as np                # noqa: E402
 
 
 def main():
     case, solver, tol, work = sys.argv[1], sys.argv[2], float(sys.argv[3]), Path(sys.argv[4])
-    x, side = bedtest.bed()
-    n = len(x)
-    v = np.zeros_like(x)
-    if case == "slide":
-        v[:, 0] = bedtest.V
-    floor_speed = bedtest.V if case == "conveyor" else 0.0
     work.mkdir(parents=True, exist_ok=True)
     data = work / "bed.data"
-    sc.write_data(str(data), ((0.0, side), (0.0, side), (-1.0, 12.0)), np.full(n, bedtest.R), 1.0,
-                  x, v)
-    T0 = bedtest.T_START
-    xf = ("%r*(time-%r)*(time>%r)" % (bedtest.V, T0, T0)) if case == "conveyor" else "0.0"
-    forces = ("variable        xf equal %s\n"
-              "region          floor plane 0 0 0 0 0 1 side in move v_xf NULL NULL" % xf)
-    nsteps = int(round(bedtest.T_END / bedtest.H))
-    text = sc.deck(data.name, nsteps, bedtest.H, 0.3,
-                   keywords="solver %s tol %g friction %r wall region floor friction %r"
-                   % (solver, tol, bedtest.MU_PAIR, bedtest.MU_FLOOR),
-                   boundary="p p f", gravity=bedtest.G, extra_forces=forces)
+    text, n, _, floor_speed = bedtest.scene(case, data, "solver %s tol %g" % (solver, tol),
+                                            dumps=False)
     res = lr.run_deck(str(os.environ.get("HARDCONTACT_LMP", ROOT / "build" / "lmp_hardcontact")),
                       text, 1, work / "run", files=[data], timeout=3600)
     th = res.thermo[0]
