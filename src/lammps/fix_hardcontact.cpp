@@ -72,6 +72,13 @@ hardcontact::FixOptions checked_options(LAMMPS *lmp, int narg, char **arg)
   return o;
 }
 
+std::vector<hardcontact::MeshWallSource::Spec> mesh_specs(const hardcontact::FixOptions &o)
+{
+  std::vector<hardcontact::MeshWallSource::Spec> specs;
+  for (const auto &m : o.wall_meshes) specs.push_back({m.file, m.scale});
+  return specs;
+}
+
 // per contact: the law's multipliers (normal force; with friction its three components, with
 // rolling five)
 int history_values(const hardcontact::FixOptions &o)
@@ -87,9 +94,11 @@ FixHardContact::FixHardContact(LAMMPS *lmp, int narg, char **arg) :
     Fix(lmp, narg, arg), options_(checked_options(lmp, narg, arg)),
     solver_(hardcontact::make_solver(options_.solver_name, options_.contact_law())), reach_(lmp), pairs_(lmp, groupbit),
     walls_(lmp, groupbit, std::move(options_.walls), std::move(options_.wall_variables)),
-    regions_(lmp, groupbit, std::move(options_.wall_regions)), obstacles_(walls_, regions_),
+    regions_(lmp, groupbit, std::move(options_.wall_regions)),
+    meshes_(lmp, groupbit, mesh_specs(options_)), obstacles_(walls_, regions_, meshes_),
     history_(memory, history_values(options_)),
-    step_(lmp, groupbit, ops_, reach_, {&pairs_, &walls_, &regions_}), integrate_(lmp, groupbit),
+    step_(lmp, groupbit, ops_, reach_, {&pairs_, &walls_, &regions_, &meshes_}),
+    integrate_(lmp, groupbit),
     outputs_(lmp, this, options_.has_friction()), virial_(lmp)
 {
   walls_.check_in_box();
@@ -164,13 +173,17 @@ void FixHardContact::init()
   walls_.init_positions();
   walls_.check_in_box();
   regions_.init(static_cast<int>(walls_.walls().size()));
+  meshes_.init(static_cast<int>(walls_.walls().size()) + regions_.n_walls());
   wall_friction_.clear();
   if (options_.has_wall_friction()) {
-    // wall indices: the planes, then kFacesPerRegion per region (region_wall_source.h)
+    // wall indices: the planes, then kFacesPerRegion per region (region_wall_source.h), then
+    // each mesh's features (mesh_wall_source.h)
     wall_friction_ = options_.plane_friction;
     for (const double mu : options_.region_friction)
       wall_friction_.insert(wall_friction_.end(), hardcontact::RegionWallSource::kFacesPerRegion,
                             mu);
+    for (int k = 0; k < meshes_.n_meshes(); ++k)
+      wall_friction_.insert(wall_friction_.end(), meshes_.n_walls(k), options_.mesh_friction[k]);
   }
   if (!solver_->traits().distributed && comm->nprocs > 1)
     hardcontact::compat::error_all(

@@ -14,6 +14,7 @@
 #include "lammps_ops.h"
 #include "neighbor_reach.h"
 #include "outputs.h"
+#include "sources/mesh_wall_source.h"
 #include "sources/pair_source.h"
 #include "sources/obstacles.h"
 #include "sources/plane_wall_source.h"
@@ -71,6 +72,7 @@ class FixHardContact : public Fix {
   hardcontact::PairSource pairs_;
   hardcontact::PlaneWallSource walls_;
   hardcontact::RegionWallSource regions_;    // after walls_: wall indices follow the planes'
+  hardcontact::MeshWallSource meshes_;       // then the regions'
   hardcontact::Obstacles obstacles_;
   hardcontact::ContactHistory history_;
   hardcontact::ContactStep step_;

@@ -127,6 +127,13 @@ void parse_warmstart(LAMMPS *lmp, char **values, int, FixOptions &o)
 void parse_wall(LAMMPS *lmp, char **values, int n, FixOptions &o)
 {
   const std::string plane = values[0];
+  if (plane == "stl") {    // its 'scale s' is read after it, as a wall's 'friction mu'
+    if (n != 2)
+      lmp->error->all(FLERR, "Fix hardcontact wall stl takes one value, the STL file's name");
+    o.wall_meshes.push_back({values[1], 1.0});
+    o.mesh_friction.push_back(FixOptions::kByType);
+    return;
+  }
   if (plane == "region") {
     if (n != 2)
       lmp->error->all(FLERR, "Fix hardcontact wall region takes one value, the region ID");
@@ -143,8 +150,8 @@ void parse_wall(LAMMPS *lmp, char **values, int n, FixOptions &o)
   else if (plane == "zplane") dim = 2;
   else
     compat::error_all(lmp->error, FLERR,
-                      "Fix hardcontact wall '{}' is unknown: use xplane, yplane, zplane or "
-                      "region",
+                      "Fix hardcontact wall '{}' is unknown: use xplane, yplane, zplane, "
+                      "region or stl",
                       plane);
   if (dim == 2 && lmp->domain->dimension == 2)
     lmp->error->all(FLERR, "Fix hardcontact wall zplane is not allowed in a 2d simulation");
@@ -178,7 +185,7 @@ void parse_wall(LAMMPS *lmp, char **values, int n, FixOptions &o)
 // `friction mu` right after a wall's values: that wall's own coefficient (every plane of an
 // `xplane lo hi`, every face of a region). Returns the words it read.
 int parse_wall_friction(LAMMPS *lmp, char **arg, int narg, int iarg, size_t planes_before,
-                        size_t regions_before, FixOptions &o)
+                        size_t regions_before, size_t meshes_before, FixOptions &o)
 {
   if (iarg + 1 >= narg)
     lmp->error->all(FLERR, "Fix hardcontact wall ... friction needs a value (the wall's own "
@@ -188,7 +195,7 @@ int parse_wall_friction(LAMMPS *lmp, char **arg, int narg, int iarg, size_t plan
     compat::error_all(lmp->error, FLERR,
                       "Fix hardcontact wall friction must be a Coulomb coefficient >= 0, got {}",
                       arg[iarg + 1]);
-  if (iarg + 2 < narg && !is_keyword(arg[iarg + 2]))
+  if (iarg + 2 < narg && !is_keyword(arg[iarg + 2]) && strcmp(arg[iarg + 2], "scale") != 0)
     compat::error_all(lmp->error, FLERR,
                       "Fix hardcontact wall ... friction takes one value, the wall's own "
                       "coefficient, got '{}' after it: for type pairs write 'friction mu I J' "
@@ -196,6 +203,23 @@ int parse_wall_friction(LAMMPS *lmp, char **arg, int narg, int iarg, size_t plan
                       arg[iarg + 2]);
   for (size_t k = planes_before; k < o.plane_friction.size(); ++k) o.plane_friction[k] = mu;
   for (size_t k = regions_before; k < o.region_friction.size(); ++k) o.region_friction[k] = mu;
+  for (size_t k = meshes_before; k < o.mesh_friction.size(); ++k) o.mesh_friction[k] = mu;
+  return 2;
+}
+
+// `scale s` right after `wall stl FILE`: the factor on the file's lengths (CAD in mm, a deck
+// in m: scale 0.001). Returns the words it read.
+int parse_wall_scale(LAMMPS *lmp, char **arg, int narg, int iarg, FixOptions &o)
+{
+  if (iarg + 1 >= narg)
+    lmp->error->all(FLERR, "Fix hardcontact wall stl ... scale needs a value (the factor on the "
+                           "file's lengths)");
+  const double s = number(lmp, "wall stl scale", arg[iarg + 1]);
+  if (!(s > 0.0))
+    compat::error_all(lmp->error, FLERR,
+                      "Fix hardcontact wall stl scale must be a positive factor, got {}",
+                      arg[iarg + 1]);
+  o.wall_meshes.back().scale = s;
   return 2;
 }
 
@@ -287,8 +311,9 @@ const Keyword keywords[] = {
     {"warmstart", 1, 0, parse_warmstart, "warmstart yes/no: start from the last step's forces"},
     {"wall", 2, 1, parse_wall,
      "wall xplane|yplane|zplane lo hi: flat walls, NULL for none, v_name for a moving one; "
-     "wall region ID: the surface of a region; either followed by 'friction mu': the wall's "
-     "own Coulomb coefficient"},
+     "wall region ID: the surface of a region; wall stl FILE [scale s]: a triangle mesh from "
+     "an STL file (ASCII or binary), its lengths times s; each followed by 'friction mu': the "
+     "wall's own Coulomb coefficient"},
     {"restitution", 1, 2, parse_restitution,
      "restitution e [I J]: Newton's restitution e in [0, 1] for type pairs I J (all: default)"},
     {"bounce", 1, 0, parse_bounce, "bounce vmin: contacts closing slower stay inelastic"},
@@ -339,8 +364,9 @@ FixOptions parse_keywords(LAMMPS *lmp, int narg, char **arg, int first)
       compat::error_all(lmp->error, FLERR, "Fix hardcontact {} needs {} value(s) after it ({})",
                         found->name, found->nvalues, found->doc);
     int n = found->nvalues;
+    const bool stl = found->parse == parse_wall && strcmp(arg[iarg + 1], "stl") == 0;
     // optional values: present when the next word is not a keyword name
-    if (found->optional > 0 && iarg + n + 1 < narg && !is_keyword(arg[iarg + n + 1])) {
+    if (!stl && found->optional > 0 && iarg + n + 1 < narg && !is_keyword(arg[iarg + n + 1])) {
       if (iarg + n + found->optional >= narg)
         compat::error_all(lmp->error, FLERR, "Fix hardcontact {} takes {} or {} value(s) after it",
                           found->name, found->nvalues, found->nvalues + found->optional);
@@ -348,11 +374,23 @@ FixOptions parse_keywords(LAMMPS *lmp, int narg, char **arg, int first)
     }
     const size_t planes_before = options.plane_friction.size();
     const size_t regions_before = options.region_friction.size();
+    const size_t meshes_before = options.mesh_friction.size();
     found->parse(lmp, arg + iarg + 1, n, options);
     iarg += 1 + n;
     if (found->parse == parse_wall) {
-      if (iarg < narg && strcmp(arg[iarg], "friction") == 0)
-        iarg += parse_wall_friction(lmp, arg, narg, iarg, planes_before, regions_before, options);
+      bool scaled = false, rubbed = false;    // each at most once, in either order
+      for (;;) {
+        if (stl && !scaled && iarg < narg && strcmp(arg[iarg], "scale") == 0) {
+          iarg += parse_wall_scale(lmp, arg, narg, iarg, options);
+          scaled = true;
+        } else if (!rubbed && iarg < narg && strcmp(arg[iarg], "friction") == 0) {
+          iarg += parse_wall_friction(lmp, arg, narg, iarg, planes_before, regions_before,
+                                      meshes_before, options);
+          rubbed = true;
+        } else {
+          break;
+        }
+      }
     } else if (found->parse == parse_friction) {
       pair_friction = true;
     }

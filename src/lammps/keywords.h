@@ -30,11 +30,18 @@ struct FixOptions {
   std::vector<PlaneWall> walls;
   std::vector<std::string> wall_variables;    // per wall: equal-style variable name, or ""
   std::vector<std::string> wall_regions;      // IDs of regions whose surfaces are walls
+  // triangle-mesh walls (`wall stl FILE [scale s]`): the file and the factor on its lengths
+  struct MeshWall {
+    std::string file;
+    double scale = 1.0;
+  };
+  std::vector<MeshWall> wall_meshes;
   // A wall's own Coulomb coefficient (`wall ... friction mu`), per plane wall (as walls) and
   // per region (as wall_regions); kByType: the pair value of the atom's type with itself.
   static constexpr double kByType = -1.0;
   std::vector<double> plane_friction;
   std::vector<double> region_friction;
+  std::vector<double> mesh_friction;    // per mesh wall (as wall_meshes)
   bool warmstart = true;
   // restitution e per type pair, (ntypes + 1)^2 row-major; empty: inelastic (the paper)
   std::vector<double> restitution;
@@ -51,7 +58,7 @@ struct FixOptions {
   bool has_friction() const
   {
     return any_positive(friction) || any_positive(plane_friction) ||
-           any_positive(region_friction) || has_rolling();
+           any_positive(region_friction) || any_positive(mesh_friction) || has_rolling();
   }
   // whether a wall's friction value is its own (not kByType)
   static bool own_friction(double v) { return v != kByType; }
@@ -60,6 +67,8 @@ struct FixOptions {
     for (const double v : plane_friction)
       if (own_friction(v)) return true;
     for (const double v : region_friction)
+      if (own_friction(v)) return true;
+    for (const double v : mesh_friction)
       if (own_friction(v)) return true;
     return false;
   }

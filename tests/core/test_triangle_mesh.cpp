@@ -188,6 +188,27 @@ TEST(TriangleMesh, WeldsVerticesAndSharesEdges)
   EXPECT_EQ(f.n_boundary_edges(), 12);
 }
 
+// Vertices repeated to within round-off (a file written from computed coordinates) are one:
+// the floor's cells built as o + i du in one triangle and (o + (i - 1) du) + du in the next.
+TEST(TriangleMesh, WeldsVerticesRepeatedToWithinRoundOff)
+{
+  std::vector<Triangle> t;
+  const double du = 0.1;
+  for (int i = 0; i < 10; ++i) {
+    double x0 = 0.0;
+    for (int k = 0; k < i; ++k) x0 += du;    // a running sum: not i * du to the bit
+    const double x1 = x0 + du;
+    t.push_back({V(x0, 0, 0), V(x1, 0, 0), V(x1, 1, 0)});
+    t.push_back({V(x0, 0, 0), V(x1, 1, 0), V(x0, 1, 0)});
+  }
+  TriangleMesh m(t);
+  EXPECT_EQ(m.n_vertices(), 22);
+  EXPECT_EQ(m.n_boundary_edges(), 22);    // the rim only
+  std::vector<MeshContact> c;
+  m.contacts(V(0.3, 0.5, 0.2), 0.3, c);    // over the shared edge x = 0.3
+  EXPECT_EQ(c.size(), 1u);
+}
+
 // A sphere over a flat floor made of many triangles has one row whatever it is over (a face,
 // a shared edge, a shared vertex), with the floor's normal: never an edge's tilted one.
 TEST(TriangleMesh, FlatFloorGivesOneRowEverywhere)

@@ -58,7 +58,11 @@ hardcontact_deck_test(NAME phys_cluster_ranks_full SCRIPT integration/test_phys_
 #               dissipation output, oblique pairs stick/slide at 7/2 mu, friction 0
 #               bit-identical to none, a spinning gas: energy never grows, linear and angular
 #               momentum exact, ranks agree
-foreach(_effect restitution moving_wall region_wall moving_region cohesion friction)
+#  mesh_wall    triangle-mesh walls from STL files: a sphere rolls down a slope of triangles at
+#               5/7 g sin as on a region plane (no bump at the edges), spheres slide across a
+#               floor of triangles (through their shared vertices) unchanged, spheres in a
+#               closed cube (binary STL) move as between plane walls and never leave it
+foreach(_effect restitution moving_wall region_wall moving_region cohesion friction mesh_wall)
   set(_hosts launcher modern liggghts)
   if(_effect MATCHES "region")
     set(_hosts launcher modern)    # LIGGGHTS 3.8 has no region walls (lammps_compat.h)

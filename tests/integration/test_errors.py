@@ -217,6 +217,19 @@ CASES = [
          ["wall region nowhere", "no region with that ID"], np4=True,
          liggghts=["wall region nowhere"] + LIGGGHTS_NO_REGION_WALLS),
     case("wall_region_no_id", deck("wall region"), ["wall needs 2 value", "wall region ID"]),
+    # triangle-mesh walls (wall stl): the file named, the problem said, on every rank count
+    case("wall_stl_missing", deck("wall stl nowhere.stl"),
+         ["wall stl", "STL file nowhere.stl", "cannot be opened"], np4=True),
+    case("wall_stl_not_stl", deck("wall stl junk.stl"),
+         ["STL file junk.stl", "neither ASCII STL", "nor binary STL"], np4=True,
+         files={"junk.stl": "not a mesh at all\n"}),
+    case("wall_stl_bad_number", deck("wall stl bad.stl"),
+         ["STL file bad.stl", "line 5", "'1,5' is not a number"], np4=True,
+         files={"bad.stl": "solid s\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\n"
+                           "vertex 1,5 0 0\nvertex 0 1 0\nendloop\nendfacet\nendsolid s\n"}),
+    case("wall_stl_scale", deck("wall stl part.stl scale -2"),
+         ["wall stl scale must be a positive factor", "-2"]),
+
     case("wall_region_atom_outside", deck("wall region small",
          setup="region small sphere 1.5 1.5 1.5 1.0 side in"),
          ["on the wrong side of wall region small"],

@@ -10,20 +10,41 @@ using Vec = Eigen::Vector3d;
 
 TriangleMesh::TriangleMesh(const std::vector<Triangle> &triangles)
 {
-  std::map<std::array<double, 3>, int> vid;
+  // Vertices closer than weld apart are one (kWeld of the mesh's extent): an STL file repeats
+  // each vertex per triangle, and a file written from computed coordinates (o + i du in one
+  // triangle, (o + (i-1) du) + du in the next) repeats them to within round-off only. Found
+  // through cells of that size: a vertex's twin lies in its cell or a neighbouring one.
+  Eigen::AlignedBox3d all;
+  all.setEmpty();
+  for (const Triangle &t : triangles)
+    for (const Vec &v : t) all.extend(v);
+  const double weld = all.isEmpty() ? 0.0 : kWeld * all.diagonal().norm();
+  std::map<std::array<long long, 3>, std::vector<int>> cells;
+  auto cell_of = [&](const Vec &v) {
+    std::array<long long, 3> k{};
+    for (int d = 0; d < 3; ++d)
+      k[d] = weld > 0.0 ? static_cast<long long>(std::floor((v[d] - all.min()[d]) / weld)) : 0;
+    return k;
+  };
+  auto vertex_id = [&](const Vec &v) {
+    const std::array<long long, 3> k = cell_of(v);
+    for (long long dx = -1; dx <= 1; ++dx)
+      for (long long dy = -1; dy <= 1; ++dy)
+        for (long long dz = -1; dz <= 1; ++dz) {
+          const auto it = cells.find({{k[0] + dx, k[1] + dy, k[2] + dz}});
+          if (it == cells.end()) continue;
+          for (const int id : it->second)
+            if ((vertex_[id] - v).norm() <= weld) return id;
+        }
+    const int id = static_cast<int>(vertex_.size());
+    vertex_.push_back(v);
+    cells[k].push_back(id);
+    return id;
+  };
   std::map<std::pair<int, int>, int> eid;
-  bounds_.setEmpty();
   for (const Triangle &t : triangles) {
     std::array<int, 3> ids{};
-    for (int k = 0; k < 3; ++k) {
-      const std::array<double, 3> key{{t[k][0], t[k][1], t[k][2]}};
-      const auto it = vid.emplace(key, static_cast<int>(vertex_.size()));
-      if (it.second) {
-        vertex_.push_back(t[k]);
-        bounds_.extend(t[k]);
-      }
-      ids[k] = it.first->second;
-    }
+    for (int k = 0; k < 3; ++k) ids[k] = vertex_id(t[k]);
     if (ids[0] == ids[1] || ids[1] == ids[2] || ids[0] == ids[2]) continue;    // welded flat
     std::array<int, 3> edges{};
     for (int k = 0; k < 3; ++k) {
@@ -55,6 +76,7 @@ TriangleMesh::TriangleMesh(const std::vector<Triangle> &triangles)
             vertex_tri_);
   incidence(n_edges(), 3, [&](int t, int k) { return tri_edge_[t][k]; }, edge_tri_start_,
             edge_tri_);
+  bounds_ = all;
   build_grid();
 }
 

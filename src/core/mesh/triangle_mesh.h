@@ -32,8 +32,10 @@ struct MeshContact {
 
 class TriangleMesh {
  public:
-  // Vertices that coincide exactly are one vertex (an STL file repeats them per triangle); two
-  // triangles share an edge when they share both its vertices.
+  // Vertices closer than kWeld times the mesh's extent are one vertex (an STL file repeats
+  // them per triangle, often to within round-off only); two triangles share an edge when they
+  // share both its vertices.
+  static constexpr double kWeld = 1e-9;
   explicit TriangleMesh(const std::vector<Triangle> &triangles);
 
   int n_vertices() const { return static_cast<int>(vertex_.size()); }

@@ -95,8 +95,9 @@ void RegionWallSource::visit(const Bodies &, RowSink &sink) const
         // delx.. points from the surface to the centre: the row's normal is the opposite
         const Vec3 normal = -Vec3(ct.delx, ct.dely, ct.delz) / ct.r;
         const int w = first_wall_ + kFacesPerRegion * k + compat::region_face(ct);
-        if (!moving) {
-          sink.offer(i, wall_body(w), normal, ct.r - radius[i], radius[i]);
+        if (!moving) {    // at rest even when plane walls move (the sink's plane velocities
+                          // are indexed by plane)
+          sink.offer(i, wall_body(w), normal, ct.r - radius[i], radius[i], Vec3::Zero());
           continue;
         }
         Vec3 u_wall = Vec3::Zero();

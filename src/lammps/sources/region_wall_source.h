@@ -42,7 +42,12 @@ class RegionWallSource : public ContactSource {
   void visit(const Bodies &bodies, RowSink &sink) const override;
   // Stops with an error if an atom's centre is on the obstacle side of a region's surface.
   void check_sides() const;
-  bool owns(int w) const { return !regions_.empty() && w >= first_wall_; }
+  bool owns(int w) const
+  {
+    return w >= first_wall_ && w < first_wall_ + kFacesPerRegion * static_cast<int>(regions_.size());
+  }
+  // the wall indices the regions hold (after init): kFacesPerRegion each
+  int n_walls() const { return kFacesPerRegion * static_cast<int>(ids_.size()); }
   // Gap of a sphere of this radius centred at x to the face of wall w (diagnostics).
   double gap(int w, const Vec3 &x, double radius) const;
   bool empty() const { return ids_.empty(); }

@@ -1,0 +1,134 @@
+#include "mesh_wall_source.h"
+
+#include "row_sink.h"
+
+#include "../lammps_compat.h"
+
+#include "atom.h"
+#include "comm.h"
+#include "error.h"
+#include "lammps.h"
+#include "neighbor.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <limits>
+
+using namespace LAMMPS_NS;
+
+namespace hardcontact {
+
+namespace {
+
+// Process 0 reads the file; the others receive its triangles (9 doubles each) or its error.
+std::vector<Triangle> read_everywhere(LAMMPS *lmp, const MeshWallSource::Spec &spec)
+{
+  std::string message;
+  std::vector<double> flat;
+  int degenerate = 0;
+  if (lmp->comm->me == 0) {
+    try {
+      const StlContents s = read_stl(spec.file, spec.scale);
+      degenerate = s.degenerate;
+      for (const Triangle &t : s.triangles)
+        for (const auto &v : t) flat.insert(flat.end(), {v[0], v[1], v[2]});
+    } catch (const StlError &e) {
+      message = e.what();
+    }
+  }
+  int len = static_cast<int>(message.size());
+  MPI_Bcast(&len, 1, MPI_INT, 0, lmp->world);
+  if (len > 0) {
+    message.resize(len);
+    MPI_Bcast(&message[0], len, MPI_CHAR, 0, lmp->world);
+    compat::error_all(lmp->error, FLERR, "Fix hardcontact wall stl: {}", message);
+  }
+  long n = static_cast<long>(flat.size());
+  MPI_Bcast(&n, 1, MPI_LONG, 0, lmp->world);
+  flat.resize(n);
+  if (n > 0) MPI_Bcast(flat.data(), static_cast<int>(n), MPI_DOUBLE, 0, lmp->world);
+  if (degenerate > 0 && lmp->comm->me == 0)
+    compat::warning(lmp->error, FLERR,
+                    "Fix hardcontact wall stl {}: {} triangle(s) of zero area left out",
+                    spec.file, degenerate);
+  std::vector<Triangle> tris(flat.size() / 9);
+  for (size_t t = 0; t < tris.size(); ++t)
+    for (int v = 0; v < 3; ++v)
+      for (int d = 0; d < 3; ++d) tris[t][v][d] = flat[9 * t + 3 * v + d];
+  return tris;
+}
+
+}    // namespace
+
+MeshWallSource::MeshWallSource(LAMMPS *lmp, int groupbit, const std::vector<Spec> &specs) :
+    lmp_(lmp), groupbit_(groupbit)
+{
+  for (const Spec &spec : specs) {
+    files_.push_back(spec.file);
+    meshes_.emplace_back(read_everywhere(lmp, spec));
+    const TriangleMesh &m = meshes_.back();
+    if (lmp->comm->me != 0) continue;
+    char line[512];
+    std::snprintf(line, sizeof line,
+                  "Fix hardcontact wall stl %s: %d triangles, %d vertices, %d edges (%d on a rim "
+                  "or shared by more than two), extent %.6g x %.6g x %.6g\n",
+                  spec.file.c_str(), m.n_triangles(), m.n_vertices(), m.n_edges(),
+                  m.n_boundary_edges(), m.bounds().sizes()[0], m.bounds().sizes()[1],
+                  m.bounds().sizes()[2]);
+    if (lmp->screen) std::fputs(line, lmp->screen);
+    if (lmp->logfile) std::fputs(line, lmp->logfile);
+  }
+}
+
+void MeshWallSource::init(int first_wall)
+{
+  first_wall_ = first_wall;
+  offset_.clear();
+  int next = 0;
+  for (const TriangleMesh &m : meshes_) {
+    offset_.push_back(next);
+    if (m.n_features() > std::numeric_limits<int>::max() / 2 - first_wall - next)
+      compat::error_all(lmp_->error, FLERR,
+                        "Fix hardcontact wall stl: the meshes have too many features (vertices, "
+                        "edges and triangles) to number: split or coarsen them");
+    next += m.n_features();
+  }
+  end_wall_ = first_wall_ + next;
+}
+
+// Every feature within the skin of an owned sphere: a sphere cannot move more than the skin in
+// a step (the fix's skin check), so no feature it could reach is left out.
+void MeshWallSource::visit(const Bodies &, RowSink &sink) const
+{
+  const Atom *atom = lmp_->atom;
+  double **x = atom->x;
+  const double *radius = atom->radius;
+  const int *mask = atom->mask;
+  const double skin = lmp_->neighbor->skin;
+  const Vec3 at_rest = Vec3::Zero();
+  for (size_t k = 0; k < meshes_.size(); ++k) {
+    const TriangleMesh &mesh = meshes_[k];
+    const int base = first_wall_ + offset_[k];
+    for (int i = 0; i < atom->nlocal; ++i) {
+      if (!(mask[i] & groupbit_)) continue;
+      const Vec3 centre(x[i][0], x[i][1], x[i][2]);
+      mesh.contacts(centre, radius[i] + skin, scratch_);
+      for (const MeshContact &c : scratch_) {
+        if (!(c.distance > 0.0)) continue;    // centre on the surface: no direction
+        const Vec3 normal = (c.point - centre) / c.distance;
+        sink.offer(i, wall_body(base + c.feature), normal, c.distance - radius[i], radius[i],
+                   at_rest);
+      }
+    }
+  }
+}
+
+double MeshWallSource::gap(int w, const Vec3 &x, double radius) const
+{
+  const int local = w - first_wall_;
+  const auto it = std::upper_bound(offset_.begin(), offset_.end(), local);
+  const size_t k = static_cast<size_t>(it - offset_.begin()) - 1;
+  return meshes_[k].distance(local - offset_[k], x) - radius;
+}
+
+}    // namespace hardcontact

@@ -1,0 +1,274 @@
+#!/usr/bin/env python3
+"""Triangle-mesh walls (`wall stl FILE [scale s]`, src/lammps/sources/mesh_wall_source.h): the
+rows of a sphere are its distances to the nearest features of the surface (faces, ridges,
+corners), each once (core/mesh/triangle_mesh.h).
+
+1. Incline: a sphere rolls down a 20 degree slope made of 2 x 33 x 6 triangles (cells of 0.37:
+   it crosses 12 rows of edges and diagonals), friction 0.5, tol 1e-6: along the slope it
+   accelerates at 5/7 g sin(20) (rolling, mu > 2/7 tan), as the same slope made of a `region
+   plane` wall does, step by step (not on LIGGGHTS, which has no region walls); its centre
+   stays at r above the slope (no bump at an edge).
+2. Floor: two frictionless spheres slide across a floor of 2 x 55 x 30 triangles under
+   gravity for 900 steps, one along the triangles' diagonals through their shared vertices, one
+   across edges and diagonals: velocities unchanged, heights r, at every step.
+3. Box: 27 spheres in a closed cube read from a binary STL (scale 2: the file's unit cube),
+   thrown at 0.7 -0.4 0.5 under gravity towards the opposite corner: (a) frictionless, the first 150 steps equal
+   those in the same box made of plane walls; (b) with friction 0.3 for 800 steps, no centre
+   leaves the cube by more than the tolerance, the largest overlap stays below tol, every
+   sphere stays.
+Serially and under mpirun (the rank count ctest gives).
+"""
+
+import math
+import struct
+
+import numpy as np
+
+import lammps_run as lr
+
+H = 0.01
+THETA = math.radians(20.0)
+
+
+def write_ascii_stl(path, triangles, name="part"):
+    with open(path, "w") as f:
+        f.write("solid %s\n" % name)
+        for a, b, c in triangles:
+            n = np.cross(np.subtract(b, a), np.subtract(c, a))
+            n = n / np.linalg.norm(n)
+            f.write("  facet normal %.17g %.17g %.17g\n    outer loop\n" % tuple(n))
+            for v in (a, b, c):
+                f.write("      vertex %.17g %.17g %.17g\n" % tuple(v))
+            f.write("    endloop\n  endfacet\n")
+        f.write("endsolid %s\n" % name)
+
+
+def write_binary_stl(path, triangles):
+    with open(path, "wb") as f:
+        f.write(b"binary STL written by test_phys_mesh_wall".ljust(80, b" "))
+        f.write(struct.pack("<I", len(triangles)))
+        for tri in triangles:
+            f.write(struct.pack("<3f", 0.0, 0.0, 0.0))
+            for v in tri:
+                f.write(struct.pack("<3f", *v))
+            f.write(b"\0\0")
+
+
+def grid(origin, du, dv, nu, nv):
+    """nu x nv cells spanned by du, dv from origin, each split along its diagonal."""
+    o, du, dv = (np.asarray(x, dtype=float) for x in (origin, du, dv))
+    tris = []
+    for i in range(nu):
+        for j in range(nv):
+            p00 = o + i * du + j * dv
+            p10, p11, p01 = p00 + du, p00 + du + dv, p00 + dv
+            tris.append((p00, p10, p11))
+            tris.append((p00, p11, p01))
+    return [[tuple(float(c) for c in v) for v in t] for t in tris]
+
+
+INCLINE = """
+units           lj
+atom_style      sphere
+dimension       3
+boundary        f f f
+atom_modify     map array
+comm_modify     vel yes
+region          box block -2 14 -2 2 -6 3
+create_box      1 box
+create_atoms    1 single {x0} 0 {z0} units box
+set             atom 1 diameter 1.0 density 1.0
+pair_style      none
+neighbor        0.5 bin
+{wall_setup}
+fix             hc all hardcontact tol 1e-6 friction 0.5 {wall}
+fix             g all gravity 1.0 vector 0 0 -1
+timestep        {h}
+variable        s equal x[1]*{c}-z[1]*{s}
+variable        vs equal vx[1]*{c}-vz[1]*{s}
+variable        hgt equal x[1]*{s}+z[1]*{c}-0.5
+thermo_style    custom step v_s v_vs v_hgt f_hc[6] f_hc[7]
+thermo_modify   format float %.15g
+thermo          1
+run             600
+"""
+
+
+def incline_test(args):
+    c, s = math.cos(THETA), math.sin(THETA)
+    along, normal = np.array([c, 0.0, -s]), np.array([s, 0.0, c])
+    # sphere touching the slope at its origin
+    x0, _, z0 = 0.5 * normal
+    fmt = dict(x0=repr(float(x0)), z0=repr(float(z0)), h=H, c=repr(c), s=repr(s))
+    runs = {}
+    # LIGGGHTS 3.8 has no region walls (lammps_compat.h): there the analytic answer alone
+    kinds = ("mesh",) if getattr(args.lmp, "name", "") == "liggghts" else ("mesh", "region")
+    for kind in kinds:
+        wd = lr.fresh_workdir("%s/incline_%s" % (args.workdir, kind))
+        if kind == "mesh":
+            origin = -1.5 * along - 1.1 * np.array([0, 1, 0])
+            write_ascii_stl("%s/slope.stl" % wd,
+                            grid(origin, 0.37 * along, [0, 0.37, 0], 33, 6))
+            deck = INCLINE.format(wall_setup="", wall="wall stl slope.stl", **fmt)
+        else:
+            deck = INCLINE.format(wall_setup="region slope plane 0 0 0 %r 0 %r side in" % (s, c),
+                                  wall="wall region slope", **fmt)
+        runs[kind] = lr.run_deck(args.lmp, deck, args.np, wd, timeout=args.timeout).thermo[-1]
+    m, r = runs["mesh"], runs.get("region")
+    t = np.asarray(m["Step"], dtype=float) * H
+    a = 5.0 / 7.0 * s
+    vs = np.asarray(m["v_vs"])
+    err_v = float(np.abs(vs - a * t).max())
+    err_h = float(np.abs(np.asarray(m["v_hgt"])).max())
+    travelled = float(np.asarray(m["v_s"])[-1])
+    lr.check(travelled > 12 * 0.37 - 0.5,
+             "incline: the sphere crosses about 12 rows of triangles (travels %.3g)" % travelled)
+    lr.check(err_v <= 1e-5,
+             "incline: rolls down the mesh at 5/7 g sin(20 deg) (speed error %.3g at worst, "
+             "every step)" % err_v)
+    lr.check(err_h <= 1e-6, "incline: centre at r above the slope at every step (|error| "
+             "%.3g): no bump at the edges" % err_h)
+    if r is not None:
+        diff = max(float(np.abs(np.asarray(m[k]) - np.asarray(r[k])).max())
+                   for k in ("v_s", "v_vs"))
+        lr.check(diff <= 1e-6, "incline: the mesh slope and a region plane give the same motion "
+                 "step by step (largest difference %.3g)" % diff)
+    lr.check(float(np.asarray(m["f_hc[6]"]).max()) == 0, "incline: no solve at maxiter")
+
+
+FLOOR = """
+units           lj
+atom_style      sphere
+dimension       3
+boundary        f f f
+atom_modify     map array
+comm_modify     vel yes
+region          box block -1 22 -1 12 -1 3
+create_box      1 box
+create_atoms    1 single 0.37 0.37 0.5 units box
+create_atoms    1 single 3.2 0.2 0.5 units box
+set             type 1 diameter 1.0 density 1.0
+region          across block 3 22 -1 12 -1 3 units box
+velocity        all set 1.0 1.0 0.0 units box
+group           across region across
+velocity        across set 1.0 0.43 0.0 units box
+pair_style      none
+neighbor        0.5 bin
+fix             hc all hardcontact tol 1e-6 wall stl floor.stl
+fix             g all gravity 1.0 vector 0 0 -1
+timestep        {h}
+thermo_style    custom step v_vx1 v_vy1 v_vz1 v_z1 v_vx2 v_vy2 v_vz2 v_z2 f_hc[7]
+thermo_modify   format float %.15g
+thermo          1
+run             900
+"""
+
+
+def floor_test(args):
+    wd = lr.fresh_workdir("%s/floor" % args.workdir)
+    write_ascii_stl("%s/floor.stl" % wd, grid([0, 0, 0], [0.37, 0, 0], [0, 0.37, 0], 55, 30))
+    per_atom = "".join("variable        %s%d equal %s[%d]\n" % (k, i, k, i)
+                       for i in (1, 2) for k in ("vx", "vy", "vz", "z"))
+    deck = FLOOR.format(h=H).replace("thermo_style", per_atom + "thermo_style", 1)
+    th = lr.run_deck(args.lmp, deck, args.np, wd, timeout=args.timeout).thermo[-1]
+    errs = {}
+    for i, (vx, vy) in ((1, (1.0, 1.0)), (2, (1.0, 0.43))):
+        errs[i] = max(float(np.abs(np.asarray(th["v_vx%d" % i]) - vx).max()),
+                      float(np.abs(np.asarray(th["v_vy%d" % i]) - vy).max()),
+                      float(np.abs(np.asarray(th["v_vz%d" % i])).max()),
+                      float(np.abs(np.asarray(th["v_z%d" % i]) - 0.5).max()))
+    lr.check(errs[1] <= 1e-6,
+             "floor: a sphere sliding along the triangles' diagonals, through their shared "
+             "vertices, keeps its velocity and height r (largest error %.3g)" % errs[1])
+    lr.check(errs[2] <= 1e-6,
+             "floor: a sphere sliding across edges and diagonals keeps its velocity and height r "
+             "(largest error %.3g)" % errs[2])
+
+
+BOX = """
+units           lj
+atom_style      sphere
+dimension       3
+boundary        f f f
+atom_modify     map array
+comm_modify     vel yes
+region          box block -1 3 -1 3 -1 3
+create_box      1 box
+lattice         sc 4.6296296296 origin 0.5 0.5 0.5    # spacing 0.6
+region          fill block 0.25 1.75 0.25 1.75 0.25 1.75 units box
+create_atoms    1 region fill
+set             type 1 diameter 0.4 density 1.0
+velocity        all set 0.7 -0.4 0.5    # LIGGGHTS 3.8 refuses velocity create here
+pair_style      none
+neighbor        0.3 bin
+fix             hc all hardcontact {extra} {walls}
+fix             g all gravity 1.0 vector -1 -1 -1
+timestep        {h}
+variable        o1 atom 0.2-x
+variable        o2 atom x-1.8
+variable        o3 atom 0.2-y
+variable        o4 atom y-1.8
+variable        o5 atom 0.2-z
+variable        o6 atom z-1.8
+compute         out all reduce max v_o1 v_o2 v_o3 v_o4 v_o5 v_o6
+compute         xs all reduce sum x y z
+thermo_style    custom step atoms c_out[1] c_out[2] c_out[3] c_out[4] c_out[5] c_out[6] c_xs[1] c_xs[2] c_xs[3] f_hc[6] f_hc[7]
+thermo_modify   format float %.15g
+thermo          10
+run             {n}
+"""
+
+
+def cube():
+    tris = []
+    for axis in range(3):
+        for side in (0.0, 1.0):
+            a, b = (axis + 1) % 3, (axis + 2) % 3
+
+            def corner(u, v):
+                p = [0.0, 0.0, 0.0]
+                p[axis], p[a], p[b] = side, u, v
+                return tuple(p)
+            tris.append((corner(0, 0), corner(1, 0), corner(1, 1)))
+            tris.append((corner(0, 0), corner(1, 1), corner(0, 1)))
+    return tris
+
+
+def box_test(args):
+    planes = "wall xplane 0 2 wall yplane 0 2 wall zplane 0 2"
+    runs = {}
+    for kind, walls in (("mesh", "wall stl cube.stl scale 2"), ("planes", planes)):
+        wd = lr.fresh_workdir("%s/box_%s" % (args.workdir, kind))
+        write_binary_stl("%s/cube.stl" % wd, cube())
+        deck = BOX.format(extra="tol 1e-6", walls=walls, h=H, n=150)
+        runs[kind] = lr.run_deck(args.lmp, deck, args.np, wd, timeout=args.timeout).thermo[-1]
+    diff = max(float(np.abs(np.asarray(runs["mesh"][k]) - np.asarray(runs["planes"][k])).max())
+               for k in ("c_xs[1]", "c_xs[2]", "c_xs[3]"))
+    lr.check(diff <= 1e-6, "box: 27 spheres in a cube read from a binary STL move as in the same "
+             "box of plane walls for 150 steps (largest difference of the mean coordinates "
+             "%.3g)" % diff)
+    wd = lr.fresh_workdir("%s/box_friction" % args.workdir)
+    write_binary_stl("%s/cube.stl" % wd, cube())
+    tol = 1e-4
+    th = lr.run_deck(args.lmp, BOX.format(extra="tol %g friction 0.3" % tol,
+                                          walls="wall stl cube.stl scale 2", h=H, n=800),
+                     args.np, wd, timeout=args.timeout).thermo[-1]
+    atoms = np.asarray(th["Atoms"], dtype=float)
+    out = max(float(np.asarray(th["c_out[%d]" % k]).max()) for k in range(1, 7))
+    overlap = float(np.asarray(th["f_hc[7]"]).max())
+    lr.check(atoms.min() == atoms.max() == 27, "box: all 27 spheres stay (%d..%d)"
+             % (atoms.min(), atoms.max()))
+    lr.check(out <= tol * 0.2, "box: no centre comes nearer a face than r - tol r (largest "
+             "excursion %.3g)" % out)
+    lr.check(overlap <= tol, "box: largest overlap %.3g <= tol %g after every step" % (overlap, tol))
+
+
+def test():
+    args = lr.test_args()
+    incline_test(args)
+    floor_test(args)
+    box_test(args)
+
+
+if __name__ == "__main__":
+    lr.main(test)
