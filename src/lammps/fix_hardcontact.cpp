@@ -173,7 +173,9 @@ void FixHardContact::init()
   walls_.init_positions();
   walls_.check_in_box();
   regions_.init(static_cast<int>(walls_.walls().size()));
-  meshes_.init(static_cast<int>(walls_.walls().size()) + regions_.n_walls());
+  reach_.init(this, HARDCONTACT_FIX_INSTANCE);
+  // a mesh's rows reach r_max + skin: half the list's 2 r_max + skin, and a little more
+  meshes_.init(static_cast<int>(walls_.walls().size()) + regions_.n_walls(), 0.5 * reach_.cutoff());
   wall_friction_.clear();
   if (options_.has_wall_friction()) {
     // wall indices: the planes, then kFacesPerRegion per region (region_wall_source.h), then
@@ -191,7 +193,6 @@ void FixHardContact::init()
         "Fix hardcontact solver {} runs on one processor only (it assembles "
         "the whole contact operator): use apgd, pgs or uzawa with mpirun",
         options_.solver_name);
-  reach_.init(this, HARDCONTACT_FIX_INSTANCE);
   deck_checks_.check(lmp, *this, regions_.regions(), !options_.restitution.empty());
 }
 

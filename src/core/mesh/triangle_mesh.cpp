@@ -77,7 +77,7 @@ TriangleMesh::TriangleMesh(const std::vector<Triangle> &triangles)
   incidence(n_edges(), 3, [&](int t, int k) { return tri_edge_[t][k]; }, edge_tri_start_,
             edge_tri_);
   bounds_ = all;
-  build_grid();
+  build_grid(0.0);
 }
 
 int TriangleMesh::n_boundary_edges() const
@@ -89,17 +89,24 @@ int TriangleMesh::n_boundary_edges() const
 // Cells about the size of a typical triangle: a query then visits a few cells and each cell
 // holds a few triangles. At most about 4 million cells (a grid of a mesh with triangles of very
 // different sizes stays that small by growing its cells).
-void TriangleMesh::build_grid()
+void TriangleMesh::index(double min_cell) { build_grid(min_cell); }
+
+void TriangleMesh::build_grid(double min_cell)
 {
   const int nt = n_triangles();
   double mean = 0.0;
+  ball_centre_.resize(nt);
+  ball_radius_.resize(nt);
   for (int t = 0; t < nt; ++t) {
     Eigen::AlignedBox3d b(vertex_[tri_[t][0]]);
     b.extend(vertex_[tri_[t][1]]).extend(vertex_[tri_[t][2]]);
     mean += b.sizes().maxCoeff();
+    ball_centre_[t] = b.center();
+    ball_radius_[t] = 0.5 * b.sizes().norm();
   }
   const Vec size = bounds_.isEmpty() ? Vec(Vec::Ones()) : Vec(bounds_.sizes());
   cell_ = nt > 0 ? mean / nt : 1.0;
+  cell_ = std::max(cell_, min_cell);
   if (!(cell_ > 0.0)) cell_ = std::max(size.maxCoeff(), 1.0);
   for (;;) {
     double cells = 1.0;
@@ -218,8 +225,9 @@ void TriangleMesh::contacts(const Vec &p, double reach, std::vector<MeshContact>
           const int t = cell_tri_[k];
           if (stamp_[t] == stamp_now_) continue;
           stamp_[t] = stamp_now_;
-          const Nearest n = nearest_on_triangle(t, p);
           report_[t] = -1;
+          if ((p - ball_centre_[t]).norm() > reach + ball_radius_[t]) continue;
+          const Nearest n = nearest_on_triangle(t, p);
           if ((n.point - p).norm() > reach) continue;
           report_[t] = static_cast<int>(found_.size());
           found_.push_back({t, n});

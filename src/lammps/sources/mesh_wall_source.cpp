@@ -80,8 +80,10 @@ MeshWallSource::MeshWallSource(LAMMPS *lmp, int groupbit, const std::vector<Spec
   }
 }
 
-void MeshWallSource::init(int first_wall)
+void MeshWallSource::init(int first_wall, double reach)
 {
+  found_.clear();    // the skin may have changed
+  for (TriangleMesh &m : meshes_) m.index(reach);
   first_wall_ = first_wall;
   offset_.clear();
   int next = 0;
@@ -98,28 +100,52 @@ void MeshWallSource::init(int first_wall)
 
 // Every feature within the skin of an owned sphere: a sphere cannot move more than the skin in
 // a step (the fix's skin check), so no feature it could reach is left out.
-void MeshWallSource::visit(const Bodies &, RowSink &sink) const
+const MeshWallSource::Found &MeshWallSource::rows_of(size_t k) const
 {
   const Atom *atom = lmp_->atom;
   double **x = atom->x;
   const double *radius = atom->radius;
-  const int *mask = atom->mask;
+  const int n = atom->nlocal;
+  Found &f = found_[k];
+  bool same = static_cast<int>(f.at.size()) == n;
+  for (int i = 0; same && i < n; ++i)
+    same = f.at[i][0] == x[i][0] && f.at[i][1] == x[i][1] && f.at[i][2] == x[i][2] &&
+           f.at[i][3] == radius[i];
+  if (same) return f;
   const double skin = lmp_->neighbor->skin;
+  f.at.resize(n);
+  f.start.assign(n + 1, 0);
+  f.rows.clear();
+  std::vector<MeshContact> &one = scratch_;
+  for (int i = 0; i < n; ++i) {
+    f.at[i] = {{x[i][0], x[i][1], x[i][2], radius[i]}};
+    f.start[i] = static_cast<int>(f.rows.size());
+    if (!(atom->mask[i] & groupbit_)) continue;
+    meshes_[k].contacts(Vec3(x[i][0], x[i][1], x[i][2]), radius[i] + skin, one);
+    f.rows.insert(f.rows.end(), one.begin(), one.end());
+  }
+  f.start[n] = static_cast<int>(f.rows.size());
+  return f;
+}
+
+void MeshWallSource::visit(const Bodies &, RowSink &sink) const
+{
+  double **x = lmp_->atom->x;
+  const double *radius = lmp_->atom->radius;
   const Vec3 at_rest = Vec3::Zero();
+  found_.resize(meshes_.size());
   for (size_t k = 0; k < meshes_.size(); ++k) {
-    const TriangleMesh &mesh = meshes_[k];
+    const Found &f = rows_of(k);
     const int base = first_wall_ + offset_[k];
-    for (int i = 0; i < atom->nlocal; ++i) {
-      if (!(mask[i] & groupbit_)) continue;
-      const Vec3 centre(x[i][0], x[i][1], x[i][2]);
-      mesh.contacts(centre, radius[i] + skin, scratch_);
-      for (const MeshContact &c : scratch_) {
+    for (int i = 0; i + 1 < static_cast<int>(f.start.size()); ++i)
+      for (int r = f.start[i]; r < f.start[i + 1]; ++r) {
+        const MeshContact &c = f.rows[r];
         if (!(c.distance > 0.0)) continue;    // centre on the surface: no direction
+        const Vec3 centre(x[i][0], x[i][1], x[i][2]);
         const Vec3 normal = (c.point - centre) / c.distance;
         sink.offer(i, wall_body(base + c.feature), normal, c.distance - radius[i], radius[i],
                    at_rest);
       }
-    }
   }
 }
 

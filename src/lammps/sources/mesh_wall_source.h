@@ -8,6 +8,7 @@
 
 #include "../../core/mesh/triangle_mesh.h"
 
+#include <array>
 #include <string>
 #include <vector>
 
@@ -27,8 +28,9 @@ class MeshWallSource : public ContactSource {
   // read stops the run with an ERROR naming it and the problem, on every process.
   MeshWallSource(LAMMPS_NS::LAMMPS *lmp, int groupbit, const std::vector<Spec> &specs);
   // first_wall: the wall index of the first mesh's first feature (after planes and regions);
-  // mesh k's feature f is wall first_wall + offset(k) + f, stable across steps.
-  void init(int first_wall);
+  // mesh k's feature f is wall first_wall + offset(k) + f, stable across steps. reach: the
+  // farthest a sphere's rows reach (largest radius + skin), which sizes the meshes' cells.
+  void init(int first_wall, double reach);
   void visit(const Bodies &bodies, RowSink &sink) const override;
   bool empty() const { return meshes_.empty(); }
   int n_meshes() const { return static_cast<int>(meshes_.size()); }
@@ -44,6 +46,17 @@ class MeshWallSource : public ContactSource {
   std::vector<TriangleMesh> meshes_;
   std::vector<int> offset_;    // per mesh, its first feature's wall index less first_wall_
   int first_wall_ = 0, end_wall_ = 0;
+  // Per mesh, the rows of every owned sphere as its step's first pass found them: the passes
+  // after it (missed rows, step.h) offer the same positions again, and with a fine mesh the
+  // search was most of the step (bench/studies/mesh_walls). Reused while every owned centre
+  // and radius is what it was, to the bit.
+  struct Found {
+    std::vector<int> start;                       // sphere i's rows: [start[i], start[i + 1])
+    std::vector<MeshContact> rows;
+    std::vector<std::array<double, 4>> at;        // x, y, z, radius of each sphere
+  };
+  mutable std::vector<Found> found_;
+  const Found &rows_of(size_t k) const;
   mutable std::vector<MeshContact> scratch_;
 };
 
