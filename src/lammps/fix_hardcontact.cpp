@@ -75,7 +75,16 @@ hardcontact::FixOptions checked_options(LAMMPS *lmp, int narg, char **arg)
 std::vector<hardcontact::MeshWallSource::Spec> mesh_specs(const hardcontact::FixOptions &o)
 {
   std::vector<hardcontact::MeshWallSource::Spec> specs;
-  for (const auto &m : o.wall_meshes) specs.push_back({m.file, m.scale});
+  for (const auto &m : o.wall_meshes) {
+    hardcontact::MeshWallSource::Spec spec;
+    spec.file = m.file;
+    spec.scale = m.scale;
+    for (int d = 0; d < 3; ++d) spec.move[d] = m.move[d];
+    spec.theta = m.theta;
+    spec.point = hardcontact::Vec3(m.point[0], m.point[1], m.point[2]);
+    spec.axis = hardcontact::Vec3(m.axis[0], m.axis[1], m.axis[2]);
+    specs.push_back(spec);
+  }
   return specs;
 }
 
@@ -222,6 +231,7 @@ void FixHardContact::setup(int vflag)
   ops_.take_times();    // HARDCONTACT_COMM_TIMES counts from here
   walls_.init_positions();    // moving walls where their variables put them at this step
   regions_.at_current_step();    // moving regions likewise
+  meshes_.at_current_step();    // and moving meshes
   step_.check_bodies(walls_.walls());
   regions_.check_sides();
   step_.find_overlaps(*solver_);
@@ -238,7 +248,9 @@ void FixHardContact::initial_integrate(int vflag)
   effects.bounce_vmin = options_.bounce_vmin;
   effects.wall_velocity = walls_.advance(update->dt);
   regions_.advance();    // moving regions to t^{n+1}, with their velocities over the step
-  effects.moving_obstacles = regions_.moving() || effects.wall_velocity != nullptr;
+  meshes_.advance(update->dt);    // moving meshes likewise
+  effects.moving_obstacles =
+      regions_.moving() || meshes_.moving() || effects.wall_velocity != nullptr;
   effects.cohesion = &options_.cohesion;
   if (options_.has_friction()) {
     effects.friction = &options_.friction;

@@ -130,7 +130,9 @@ void parse_wall(LAMMPS *lmp, char **values, int n, FixOptions &o)
   if (plane == "stl") {    // its 'scale s' is read after it, as a wall's 'friction mu'
     if (n != 2)
       lmp->error->all(FLERR, "Fix hardcontact wall stl takes one value, the STL file's name");
-    o.wall_meshes.push_back({values[1], 1.0});
+    FixOptions::MeshWall mesh;
+    mesh.file = values[1];
+    o.wall_meshes.push_back(mesh);
     o.mesh_friction.push_back(FixOptions::kByType);
     return;
   }
@@ -195,7 +197,8 @@ int parse_wall_friction(LAMMPS *lmp, char **arg, int narg, int iarg, size_t plan
     compat::error_all(lmp->error, FLERR,
                       "Fix hardcontact wall friction must be a Coulomb coefficient >= 0, got {}",
                       arg[iarg + 1]);
-  if (iarg + 2 < narg && !is_keyword(arg[iarg + 2]) && strcmp(arg[iarg + 2], "scale") != 0)
+  if (iarg + 2 < narg && !is_keyword(arg[iarg + 2]) && strcmp(arg[iarg + 2], "scale") != 0 &&
+      strcmp(arg[iarg + 2], "move") != 0 && strcmp(arg[iarg + 2], "rotate") != 0)
     compat::error_all(lmp->error, FLERR,
                       "Fix hardcontact wall ... friction takes one value, the wall's own "
                       "coefficient, got '{}' after it: for type pairs write 'friction mu I J' "
@@ -205,6 +208,54 @@ int parse_wall_friction(LAMMPS *lmp, char **arg, int narg, int iarg, size_t plan
   for (size_t k = regions_before; k < o.region_friction.size(); ++k) o.region_friction[k] = mu;
   for (size_t k = meshes_before; k < o.mesh_friction.size(); ++k) o.mesh_friction[k] = mu;
   return 2;
+}
+
+// `move v_x v_y v_z` after `wall stl FILE`: the mesh's displacement from where the file puts
+// it, each an equal-style variable (v_name) or NULL. Returns the words it read.
+int parse_wall_move(LAMMPS *lmp, char **arg, int narg, int iarg, FixOptions &o)
+{
+  if (iarg + 3 >= narg)
+    lmp->error->all(FLERR, "Fix hardcontact wall stl ... move needs 3 values (v_x v_y v_z: "
+                           "equal-style variables of the displacement, or NULL)");
+  bool any = false;
+  for (int d = 0; d < 3; ++d) {
+    const char *w = arg[iarg + 1 + d];
+    if (strcmp(w, "NULL") == 0) continue;
+    if (strncmp(w, "v_", 2) != 0 || w[2] == '\0')
+      compat::error_all(lmp->error, FLERR,
+                        "Fix hardcontact wall stl ... move takes v_name or NULL per direction "
+                        "(as region ... move), got '{}'",
+                        w);
+    o.wall_meshes.back().move[d] = w + 2;
+    any = true;
+  }
+  if (!any)
+    lmp->error->all(FLERR, "Fix hardcontact wall stl ... move NULL NULL NULL moves nothing: "
+                           "remove it or name a variable");
+  return 4;
+}
+
+// `rotate v_theta Px Py Pz Ax Ay Az` after `wall stl FILE`: the mesh turned by the angle
+// theta (radians, an equal-style variable) about the axis A through P, as region ... rotate.
+int parse_wall_rotate(LAMMPS *lmp, char **arg, int narg, int iarg, FixOptions &o)
+{
+  if (iarg + 7 >= narg)
+    lmp->error->all(FLERR, "Fix hardcontact wall stl ... rotate needs 7 values (v_theta Px Py "
+                           "Pz Ax Ay Az: the angle in radians, a point on the axis, its "
+                           "direction)");
+  const char *w = arg[iarg + 1];
+  if (strncmp(w, "v_", 2) != 0 || w[2] == '\0')
+    compat::error_all(lmp->error, FLERR,
+                      "Fix hardcontact wall stl ... rotate takes the angle as v_name (an "
+                      "equal-style variable, radians), got '{}'",
+                      w);
+  FixOptions::MeshWall &m = o.wall_meshes.back();
+  m.theta = w + 2;
+  for (int d = 0; d < 3; ++d) m.point[d] = number(lmp, "wall stl rotate P", arg[iarg + 2 + d]);
+  for (int d = 0; d < 3; ++d) m.axis[d] = number(lmp, "wall stl rotate A", arg[iarg + 5 + d]);
+  if (m.axis[0] == 0.0 && m.axis[1] == 0.0 && m.axis[2] == 0.0)
+    lmp->error->all(FLERR, "Fix hardcontact wall stl ... rotate: the axis direction is zero");
+  return 8;
 }
 
 // `scale s` right after `wall stl FILE`: the factor on the file's lengths (CAD in mm, a deck
@@ -311,9 +362,10 @@ const Keyword keywords[] = {
     {"warmstart", 1, 0, parse_warmstart, "warmstart yes/no: start from the last step's forces"},
     {"wall", 2, 1, parse_wall,
      "wall xplane|yplane|zplane lo hi: flat walls, NULL for none, v_name for a moving one; "
-     "wall region ID: the surface of a region; wall stl FILE [scale s]: a triangle mesh from "
-     "an STL file (ASCII or binary), its lengths times s; each followed by 'friction mu': the "
-     "wall's own Coulomb coefficient"},
+     "wall region ID: the surface of a region; wall stl FILE [scale s] [move v_x v_y v_z] "
+     "[rotate v_theta Px Py Pz Ax Ay Az]: a triangle mesh from an STL file (ASCII or binary), "
+     "its lengths times s, moved as region ... move/rotate; each followed by 'friction mu': "
+     "the wall's own Coulomb coefficient"},
     {"restitution", 1, 2, parse_restitution,
      "restitution e [I J]: Newton's restitution e in [0, 1] for type pairs I J (all: default)"},
     {"bounce", 1, 0, parse_bounce, "bounce vmin: contacts closing slower stay inelastic"},
@@ -378,11 +430,17 @@ FixOptions parse_keywords(LAMMPS *lmp, int narg, char **arg, int first)
     found->parse(lmp, arg + iarg + 1, n, options);
     iarg += 1 + n;
     if (found->parse == parse_wall) {
-      bool scaled = false, rubbed = false;    // each at most once, in either order
+      bool scaled = false, rubbed = false, moved = false, turned = false;    // each at most once
       for (;;) {
         if (stl && !scaled && iarg < narg && strcmp(arg[iarg], "scale") == 0) {
           iarg += parse_wall_scale(lmp, arg, narg, iarg, options);
           scaled = true;
+        } else if (stl && !moved && iarg < narg && strcmp(arg[iarg], "move") == 0) {
+          iarg += parse_wall_move(lmp, arg, narg, iarg, options);
+          moved = true;
+        } else if (stl && !turned && iarg < narg && strcmp(arg[iarg], "rotate") == 0) {
+          iarg += parse_wall_rotate(lmp, arg, narg, iarg, options);
+          turned = true;
         } else if (!rubbed && iarg < narg && strcmp(arg[iarg], "friction") == 0) {
           iarg += parse_wall_friction(lmp, arg, narg, iarg, planes_before, regions_before,
                                       meshes_before, options);

@@ -34,6 +34,13 @@ struct FixOptions {
   struct MeshWall {
     std::string file;
     double scale = 1.0;
+    // `move v_x v_y v_z` (each a variable name or "" for NULL) and `rotate v_theta Px Py Pz
+    // Ax Ay Az` (theta "" for none): the mesh's displacement and rotation, as region ... move
+    // / rotate take them
+    std::string move[3];
+    std::string theta;
+    double point[3] = {0.0, 0.0, 0.0};
+    double axis[3] = {0.0, 0.0, 1.0};
   };
   std::vector<MeshWall> wall_meshes;
   // A wall's own Coulomb coefficient (`wall ... friction mu`), per plane wall (as walls) and

@@ -142,6 +142,13 @@ def case(name, deck_text, phrases, np4=False, files=None, min_np=1, modern=None,
                 liggghts_setup_nan, hosts)
 
 
+# a floor of two triangles under the four spheres of BASE (z = 0, the box's bottom)
+FLOOR_STL = ("solid floor\n"
+             "facet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 6 0 0\nvertex 6 6 0\n"
+             "endloop\nendfacet\n"
+             "facet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 6 6 0\nvertex 0 6 0\n"
+             "endloop\nendfacet\nendsolid floor\n")
+
 CASES = [
     # atom style and atom IDs
     case("atom_style_atomic", deck(style="atomic", setup="mass 1 1.0"),
@@ -229,6 +236,13 @@ CASES = [
                            "vertex 1,5 0 0\nvertex 0 1 0\nendloop\nendfacet\nendsolid s\n"}),
     case("wall_stl_scale", deck("wall stl part.stl scale -2"),
          ["wall stl scale must be a positive factor", "-2"]),
+    case("wall_stl_move_no_variable", deck("wall stl floor.stl move v_nowhere NULL NULL"),
+         ["wall stl floor.stl", "variable nowhere does not exist", "variable nowhere equal"],
+         np4=True, files={"floor.stl": FLOOR_STL}),
+    case("wall_stl_move_nothing", deck("wall stl floor.stl move NULL NULL NULL"),
+         ["move NULL NULL NULL moves nothing"], files={"floor.stl": FLOOR_STL}),
+    case("wall_stl_rotate_axis", deck("wall stl floor.stl rotate v_a 0 0 0 0 0 0"),
+         ["rotate", "axis direction is zero"], files={"floor.stl": FLOOR_STL}),
 
     case("wall_region_atom_outside", deck("wall region small",
          setup="region small sphere 1.5 1.5 1.5 1.0 side in"),

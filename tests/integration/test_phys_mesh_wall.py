@@ -16,6 +16,12 @@ corners), each once (core/mesh/triangle_mesh.h).
    those in the same box made of plane walls; (b) with friction 0.3 for 800 steps, no centre
    leaves the cube by more than the tolerance, the largest overlap stays below tol, every
    sphere stays.
+4. Moving meshes (`move`, `rotate`): a floor of two triangles sliding in its own plane at V = 2
+   under a sphere at rest (friction 0.3) accelerates it at mu g and spins it up until it rolls,
+   from t* = 2 V / (7 mu g) on, at 2/7 V with omega r = -5/7 V, its centre at height r; the
+   same floor rising at 0.5 carries it (z = z_floor + r, vz = 0.5); 180 spheres in a drum of
+   72 x 2 triangles rotating at 0.3 rad per unit time are dragged up its rising side, none
+   leaves it or comes nearer its facets than r (within tol), no solve stops at maxiter.
 Serially and under mpirun (the rank count ctest gives).
 """
 
@@ -263,11 +269,139 @@ def box_test(args):
     lr.check(overlap <= tol, "box: largest overlap %.3g <= tol %g after every step" % (overlap, tol))
 
 
+CONVEYOR = """
+units           lj
+atom_style      sphere
+dimension       3
+boundary        p p f
+atom_modify     map array
+comm_modify     vel yes
+region          box block -30 30 -2 2 -1 40
+create_box      1 box
+create_atoms    1 single -2 0 0.5
+set             atom 1 diameter 1.0 density 1.0
+pair_style      none
+neighbor        0.5 bin
+variable        xf equal {vx}*time
+variable        zf equal {vz}*time
+fix             hc all hardcontact tol 1e-4 {friction} wall stl floor.stl move v_xf NULL v_zf
+fix             g all gravity 1.0 vector 0 0 -1
+timestep        {h}
+compute         om all property/atom omegay
+compute         wy all reduce sum c_om
+variable        wy equal c_wy    # one atom: the sum is its spin
+variable        vx equal vx[1]
+variable        vz equal vz[1]
+variable        gap equal z[1]-0.5-v_zf
+thermo_style    custom step v_vx v_vz v_wy v_gap f_hc[6] f_hc[7]
+thermo_modify   format float %.15g
+thermo          1
+run             {n}
+"""
+
+
+def conveyor(args, name, vx, vz, friction, n):
+    wd = lr.fresh_workdir("%s/%s" % (args.workdir, name))
+    # a floor larger than the box (periodic in x, y): every image of the sphere is over it
+    write_ascii_stl("%s/floor.stl" % wd, [((-60, -6, 0), (60, -6, 0), (60, 6, 0)),
+                                         ((-60, -6, 0), (60, 6, 0), (-60, 6, 0))])
+    deck = CONVEYOR.format(vx=vx, vz=vz, friction=friction, h=H, n=n)
+    th = lr.run_deck(args.lmp, deck, args.np, wd, timeout=args.timeout).thermo[-1]
+    return np.asarray(th["Step"], dtype=float) * H, th
+
+
+def moving_floor_test(args):
+    V, MU, r = 2.0, 0.3, 0.5
+    t, th = conveyor(args, "conveyor", V, 0.0, "friction %g" % MU, 300)
+    tstar = 2.0 * V / (7.0 * MU)
+    vx, wy = np.asarray(th["v_vx"]), np.asarray(th["v_wy"])
+    slide, roll = t < tstar - 2 * H, t > tstar + 2 * H
+    err_slide = max(float(np.abs(vx[slide] - MU * t[slide]).max()),
+                    float(np.abs(wy[slide] + 5.0 * MU * t[slide] / (2.0 * r)).max()))
+    err_roll = max(float(np.abs(vx[roll] - 2.0 / 7.0 * V).max()),
+                   float(np.abs(wy[roll] * r + 5.0 / 7.0 * V).max()))
+    gap = float(np.abs(np.asarray(th["v_gap"])).max())
+    lr.check(err_slide <= 1e-5 and err_roll <= 1e-5,
+             "conveyor: a mesh floor sliding at V = %g accelerates the sphere at mu g and spins "
+             "it up until t* = %.4g, then it rolls at 2/7 V with omega r = -5/7 V (errors %.3g "
+             "sliding, %.3g rolling)" % (V, tstar, err_slide, err_roll))
+    lr.check(gap <= 1e-6, "conveyor: centre at height r within 1e-6 (largest %.3g)" % gap)
+    lr.check(float(np.asarray(th["f_hc[6]"]).max()) == 0, "conveyor: no solve at maxiter")
+    t, th = conveyor(args, "lift", 0.0, 0.5, "", 200)
+    gap = float(np.abs(np.asarray(th["v_gap"])).max())
+    verr = float(np.abs(np.asarray(th["v_vz"])[2:] - 0.5).max())
+    lr.check(gap <= 1e-6 and verr <= 1e-6,
+             "lift: a mesh floor rising at 0.5 carries the sphere at z_floor + r (largest |gap| "
+             "%.3g) and vz = 0.5 (largest error %.3g)" % (gap, verr))
+
+
+DRUM = """
+units           lj
+atom_style      sphere
+dimension       3
+boundary        f p f
+atom_modify     map array
+comm_modify     vel yes
+region          box block -6 6 0 4.8 -6 6
+create_box      1 box
+region          fill cylinder y 0 0 4.45 -100 100 side in units box
+lattice         sc 0.5787037    # spacing 1.2: 4 layers across the periodic length 4.8
+create_atoms    1 region fill
+set             type 1 diameter 1.0 density 1.0
+variable        theta equal {omega}*time
+pair_style      none
+neighbor        0.5 bin
+fix             hc all hardcontact tol {tol} friction 0.5 wall stl drum.stl rotate v_theta 0 0 0 0 1 0
+fix             g all gravity 1.0 vector 0 0 -1
+timestep        {h}
+variable        xc equal xcm(all,x)
+variable        rad atom sqrt(x*x+z*z)
+compute         rmax all reduce max v_rad
+thermo_style    custom step atoms v_xc c_rmax f_hc[6] f_hc[7]
+thermo_modify   format float %.15g
+thermo          10
+run             {n}
+"""
+
+
+def drum_test(args):
+    wd = lr.fresh_workdir("%s/drum" % args.workdir)
+    R, N, omega, n, tol = 5.0, 72, 0.3, 500, 1e-4
+    tris = []
+    for k in range(N):
+        a0, a1 = 2 * math.pi * k / N, 2 * math.pi * ((k + 1) % N) / N
+        p = [(R * math.cos(a), R * math.sin(a)) for a in (a0, a1)]
+        q = [((x, -1.5, z), (x, 6.3, z)) for x, z in p]    # beyond the periodic length 4.8
+        tris.append((q[0][0], q[1][0], q[1][1]))
+        tris.append((q[0][0], q[1][1], q[0][1]))
+    write_ascii_stl("%s/drum.stl" % wd, tris)
+    th = lr.run_deck(args.lmp, DRUM.format(omega=omega, h=H, n=n, tol=tol), args.np, wd,
+                     timeout=args.timeout).thermo[-1]
+    atoms = np.asarray(th["Atoms"], dtype=float)
+    xc = np.asarray(th["v_xc"])
+    rmax = float(np.asarray(th["c_rmax"]).max())
+    overlap = float(np.asarray(th["f_hc[7]"]).max())
+    maxiter = float(np.asarray(th["f_hc[6]"]).max())
+    # the facets' corners are R from the axis, their middles R cos(pi / N): a sphere in a
+    # corner touches two facets, its centre (R cos(pi / N) - r) / cos(pi / N) from the axis
+    reach = (R * math.cos(math.pi / N) - 0.5) / math.cos(math.pi / N)
+    lr.check(atoms.min() == atoms[0] == atoms.max() and atoms[0] > 140,
+             "drum: all %d spheres stay" % atoms[0])
+    lr.check(float(xc[-1]) < -0.5, "drum: the bed is dragged up the rising side of the rotating "
+             "mesh (centre of mass x %.3g < -0.5)" % float(xc[-1]))
+    lr.check(rmax <= reach + tol * 0.5 + 1e-9, "drum: no centre farther from the axis than a "
+             "facet corner allows, %.6f (largest %.9g)" % (reach, rmax))
+    lr.check(overlap <= tol and maxiter == 0, "drum: largest overlap %.3g <= tol %g after every "
+             "step; solves at maxiter: %g" % (overlap, tol, maxiter))
+
+
 def test():
     args = lr.test_args()
     incline_test(args)
     floor_test(args)
     box_test(args)
+    moving_floor_test(args)
+    drum_test(args)
 
 
 if __name__ == "__main__":

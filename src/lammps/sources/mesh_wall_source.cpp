@@ -8,7 +8,13 @@
 #include "comm.h"
 #include "error.h"
 #include "lammps.h"
+#include "input.h"
+#include "modify.h"
 #include "neighbor.h"
+#include "update.h"
+#include "variable.h"
+
+#include <Eigen/Geometry>
 
 #include <algorithm>
 #include <cstdio>
@@ -65,6 +71,7 @@ MeshWallSource::MeshWallSource(LAMMPS *lmp, int groupbit, const std::vector<Spec
 {
   for (const Spec &spec : specs) {
     files_.push_back(spec.file);
+    specs_.push_back(spec);
     meshes_.emplace_back(read_everywhere(lmp, spec));
     const TriangleMesh &m = meshes_.back();
     if (lmp->comm->me != 0) continue;
@@ -80,9 +87,93 @@ MeshWallSource::MeshWallSource(LAMMPS *lmp, int groupbit, const std::vector<Spec
   }
 }
 
+bool MeshWallSource::moving() const
+{
+  for (const Placement &p : place_)
+    if (p.moves()) return true;
+  return false;
+}
+
+// The placement of mesh k from its variables now (LAMMPS's step counter gives the time).
+void MeshWallSource::evaluate(size_t k)
+{
+  Placement &p = place_[k];
+  if (!p.moves()) return;
+  lmp_->modify->clearstep_compute();
+  auto value = [&](int ivar, const std::string &name) {
+    const double v = lmp_->input->variable->compute_equal(ivar);
+    if (!std::isfinite(v))
+      compat::error_all(lmp_->error, FLERR,
+                        "Fix hardcontact wall stl {}: variable {} is not a finite number at "
+                        "step {}",
+                        files_[k], name, lmp_->update->ntimestep);
+    return v;
+  };
+  for (int d = 0; d < 3; ++d)
+    if (p.move_var[d] >= 0) p.d[d] = value(p.move_var[d], specs_[k].move[d]);
+  if (p.theta_var >= 0) {
+    p.theta = value(p.theta_var, specs_[k].theta);
+    p.rotation = Eigen::AngleAxisd(p.theta, p.axis).toRotationMatrix();
+  }
+  compat::addstep_compute(lmp_->modify, lmp_->update->ntimestep + 1);
+  ++moves_;
+}
+
+void MeshWallSource::at_current_step()
+{
+  for (size_t k = 0; k < place_.size(); ++k) {
+    evaluate(k);
+    place_[k].velocity = Vec3::Zero();
+    place_[k].omega = 0.0;
+  }
+  ahead_ = false;
+}
+
+void MeshWallSource::advance(double h)
+{
+  if (!moving()) return;
+  for (size_t k = 0; k < place_.size(); ++k) {
+    Placement &p = place_[k];
+    if (!p.moves()) continue;
+    const Vec3 d0 = p.d;
+    const double theta0 = p.theta;
+    evaluate(k);
+    p.velocity = (p.d - d0) / h;
+    p.omega = (p.theta - theta0) / h;
+  }
+  ahead_ = true;
+  h_ = h;
+}
+
 void MeshWallSource::init(int first_wall, double reach)
 {
   found_.clear();    // the skin may have changed
+  place_.resize(meshes_.size());
+  for (size_t k = 0; k < meshes_.size(); ++k) {
+    Placement &p = place_[k];
+    const Spec &spec = specs_[k];
+    auto find = [&](const std::string &name) {
+      if (name.empty()) return -1;
+      const int ivar = compat::find_variable(lmp_->input->variable, name);
+      if (ivar < 0)
+        compat::error_all(lmp_->error, FLERR,
+                          "Fix hardcontact wall stl {}: variable {} does not exist: define it "
+                          "with 'variable {} equal ...' before the run",
+                          spec.file, name, name);
+      if (!lmp_->input->variable->equalstyle(ivar))
+        compat::error_all(lmp_->error, FLERR,
+                          "Fix hardcontact wall stl {}: variable {} is not equal-style: a "
+                          "mesh's displacement or angle is one number ('variable {} equal ...')",
+                          spec.file, name, name);
+      return ivar;
+    };
+    for (int d = 0; d < 3; ++d) p.move_var[d] = find(spec.move[d]);
+    p.theta_var = find(spec.theta);
+    p.point = spec.point;
+    p.axis = spec.axis.normalized();
+    evaluate(k);
+  }
+  ahead_ = false;
   for (TriangleMesh &m : meshes_) m.index(reach);
   first_wall_ = first_wall;
   offset_.clear();
@@ -107,12 +198,14 @@ const MeshWallSource::Found &MeshWallSource::rows_of(size_t k) const
   const double *radius = atom->radius;
   const int n = atom->nlocal;
   Found &f = found_[k];
-  bool same = static_cast<int>(f.at.size()) == n;
+  bool same = static_cast<int>(f.at.size()) == n && f.placement == moves_;
   for (int i = 0; same && i < n; ++i)
     same = f.at[i][0] == x[i][0] && f.at[i][1] == x[i][1] && f.at[i][2] == x[i][2] &&
            f.at[i][3] == radius[i];
   if (same) return f;
   const double skin = lmp_->neighbor->skin;
+  const Placement &p = place_[k];
+  f.placement = moves_;
   f.at.resize(n);
   f.start.assign(n + 1, 0);
   f.rows.clear();
@@ -121,21 +214,28 @@ const MeshWallSource::Found &MeshWallSource::rows_of(size_t k) const
     f.at[i] = {{x[i][0], x[i][1], x[i][2], radius[i]}};
     f.start[i] = static_cast<int>(f.rows.size());
     if (!(atom->mask[i] & groupbit_)) continue;
-    meshes_[k].contacts(Vec3(x[i][0], x[i][1], x[i][2]), radius[i] + skin, one);
+    const Vec3 centre(x[i][0], x[i][1], x[i][2]);
+    meshes_[k].contacts(p.moves() ? p.to_mesh(centre) : centre, radius[i] + skin, one);
+    for (MeshContact &c : one)
+      if (p.moves()) c.point = p.to_world(c.point);    // distances are the same in either frame
     f.rows.insert(f.rows.end(), one.begin(), one.end());
   }
   f.start[n] = static_cast<int>(f.rows.size());
   return f;
 }
 
+// Every feature within the skin of an owned sphere: a sphere cannot move more than the skin in
+// a step (the fix's skin check), so no feature it could reach is left out. A moving mesh's rows
+// carry the velocity of its surface at the contact point over the step, v + omega A x (c - P -
+// d), and offer the gap at t^{n+1} less h n . u_wall (region_wall_source.cpp).
 void MeshWallSource::visit(const Bodies &, RowSink &sink) const
 {
   double **x = lmp_->atom->x;
   const double *radius = lmp_->atom->radius;
-  const Vec3 at_rest = Vec3::Zero();
   found_.resize(meshes_.size());
   for (size_t k = 0; k < meshes_.size(); ++k) {
     const Found &f = rows_of(k);
+    const Placement &p = place_[k];
     const int base = first_wall_ + offset_[k];
     for (int i = 0; i + 1 < static_cast<int>(f.start.size()); ++i)
       for (int r = f.start[i]; r < f.start[i + 1]; ++r) {
@@ -143,8 +243,10 @@ void MeshWallSource::visit(const Bodies &, RowSink &sink) const
         if (!(c.distance > 0.0)) continue;    // centre on the surface: no direction
         const Vec3 centre(x[i][0], x[i][1], x[i][2]);
         const Vec3 normal = (c.point - centre) / c.distance;
-        sink.offer(i, wall_body(base + c.feature), normal, c.distance - radius[i], radius[i],
-                   at_rest);
+        Vec3 u_wall = Vec3::Zero();
+        if (p.moves()) u_wall = p.velocity + (p.omega * p.axis).cross(c.point - p.point - p.d);
+        const double d = c.distance - radius[i] - (ahead_ ? h_ * normal.dot(u_wall) : 0.0);
+        sink.offer(i, wall_body(base + c.feature), normal, d, radius[i], u_wall);
       }
   }
 }
@@ -154,7 +256,8 @@ double MeshWallSource::gap(int w, const Vec3 &x, double radius) const
   const int local = w - first_wall_;
   const auto it = std::upper_bound(offset_.begin(), offset_.end(), local);
   const size_t k = static_cast<size_t>(it - offset_.begin()) - 1;
-  return meshes_[k].distance(local - offset_[k], x) - radius;
+  const Placement &p = place_[k];
+  return meshes_[k].distance(local - offset_[k], p.moves() ? p.to_mesh(x) : x) - radius;
 }
 
 }    // namespace hardcontact

@@ -1,7 +1,11 @@
-// Walls made of triangle meshes read from STL files (keyword `wall stl FILE [scale s]`): one
-// row per sphere and nearest feature of the surface (a face, a ridge, a corner; Remark 4, the
-// form of a plane wall's row), core/mesh/triangle_mesh.h. The surface is two-sided: a sphere
-// stays on the side it starts on. Fixed meshes (a moving mesh is a later addition).
+// Walls made of triangle meshes read from STL files (keyword `wall stl FILE [scale s] [move
+// v_x v_y v_z] [rotate v_theta P A]`): one row per sphere and nearest feature of the surface (a
+// face, a ridge, a corner; Remark 4, the form of a plane wall's row), core/mesh/triangle_mesh.h.
+// The surface is two-sided: a sphere stays on the side it starts on. A mesh that moves is
+// placed as LAMMPS places a moving region: x = R(theta) (X - P) + P + d, X its point in the
+// file, d the displacement; the mesh itself stays in the file's frame and each sphere is
+// searched for there. Its rows carry the velocity of the surface at the contact point over the
+// step, as moving region walls' do (region_wall_source.h).
 #pragma once
 
 #include "contact_source.h"
@@ -23,6 +27,9 @@ class MeshWallSource : public ContactSource {
   struct Spec {
     std::string file;
     double scale = 1.0;
+    std::string move[3];    // equal-style variables of the displacement ("" for none)
+    std::string theta;      // equal-style variable of the angle (radians), "" for none
+    Vec3 point = Vec3::Zero(), axis = Vec3::UnitZ();
   };
   // Reads every file (process 0 reads, every process builds the mesh); a file that cannot be
   // read stops the run with an ERROR naming it and the problem, on every process.
@@ -31,6 +38,13 @@ class MeshWallSource : public ContactSource {
   // mesh k's feature f is wall first_wall + offset(k) + f, stable across steps. reach: the
   // farthest a sphere's rows reach (largest radius + skin), which sizes the meshes' cells.
   void init(int first_wall, double reach);
+  // Moving meshes where their variables put them now (setup: q^n and the meshes at t^n).
+  void at_current_step();
+  // Before a step at t^{n+1} (LAMMPS's step counter already advanced): moving meshes where
+  // they will be at its end, and their motion over the step. Rows then measure the gap to the
+  // mesh at t^{n+1} and offer D = that gap - h n . u_wall (the convention of region walls).
+  void advance(double h);
+  bool moving() const;
   void visit(const Bodies &bodies, RowSink &sink) const override;
   bool empty() const { return meshes_.empty(); }
   int n_meshes() const { return static_cast<int>(meshes_.size()); }
@@ -44,6 +58,26 @@ class MeshWallSource : public ContactSource {
   int groupbit_;
   std::vector<std::string> files_;
   std::vector<TriangleMesh> meshes_;
+  // Where a mesh is: its displacement and angle now (at t^{n+1} after advance), and its
+  // velocity and angular velocity over the last step.
+  struct Placement {
+    std::array<int, 3> move_var{{-1, -1, -1}};
+    int theta_var = -1;
+    Vec3 point = Vec3::Zero(), axis = Vec3::UnitZ();
+    Vec3 d = Vec3::Zero(), velocity = Vec3::Zero();
+    double theta = 0.0, omega = 0.0;
+    Eigen::Matrix3d rotation = Eigen::Matrix3d::Identity();
+    bool moves() const { return theta_var >= 0 || move_var[0] >= 0 || move_var[1] >= 0 ||
+                                move_var[2] >= 0; }
+    Vec3 to_mesh(const Vec3 &x) const { return rotation.transpose() * (x - point - d) + point; }
+    Vec3 to_world(const Vec3 &X) const { return rotation * (X - point) + point + d; }
+  };
+  std::vector<Placement> place_;
+  std::vector<Spec> specs_;
+  bool ahead_ = false;    // moving meshes stand at t^{n+1} (advance), not t^n
+  double h_ = 0.0;
+  int moves_ = 0;         // counts placements: the rows found for one do not serve another
+  void evaluate(size_t k);
   std::vector<int> offset_;    // per mesh, its first feature's wall index less first_wall_
   int first_wall_ = 0, end_wall_ = 0;
   // Per mesh, the rows of every owned sphere as its step's first pass found them: the passes
@@ -54,6 +88,7 @@ class MeshWallSource : public ContactSource {
     std::vector<int> start;                       // sphere i's rows: [start[i], start[i + 1])
     std::vector<MeshContact> rows;
     std::vector<std::array<double, 4>> at;        // x, y, z, radius of each sphere
+    int placement = -1;                           // moves_ when found
   };
   mutable std::vector<Found> found_;
   const Found &rows_of(size_t k) const;
