@@ -77,6 +77,7 @@ std::vector<hardcontact::MeshWallSource::Spec> mesh_specs(const hardcontact::Fix
   std::vector<hardcontact::MeshWallSource::Spec> specs;
   for (const auto &m : o.wall_meshes) {
     hardcontact::MeshWallSource::Spec spec;
+    spec.fix_id = m.fix_id;
     spec.file = m.file;
     spec.scale = m.scale;
     for (int d = 0; d < 3; ++d) spec.move[d] = m.move[d];
@@ -184,7 +185,8 @@ void FixHardContact::init()
   regions_.init(static_cast<int>(walls_.walls().size()));
   reach_.init(this, HARDCONTACT_FIX_INSTANCE);
   // a mesh's rows reach r_max + skin: half the list's 2 r_max + skin, and a little more
-  meshes_.init(static_cast<int>(walls_.walls().size()) + regions_.n_walls(), 0.5 * reach_.cutoff());
+  meshes_.init(static_cast<int>(walls_.walls().size()) + regions_.n_walls(), 0.5 * reach_.cutoff(),
+               modify->find_fix(id));
   wall_friction_.clear();
   if (options_.has_wall_friction()) {
     // wall indices: the planes, then kFacesPerRegion per region (region_wall_source.h), then

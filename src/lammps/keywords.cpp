@@ -136,6 +136,16 @@ void parse_wall(LAMMPS *lmp, char **values, int n, FixOptions &o)
     o.mesh_friction.push_back(FixOptions::kByType);
     return;
   }
+  if (plane == "mesh") {    // LIGGGHTS's fix mesh/surface ID
+    if (n != 2)
+      lmp->error->all(FLERR, "Fix hardcontact wall mesh takes one value, the ID of a fix "
+                             "mesh/surface");
+    FixOptions::MeshWall mesh;
+    mesh.fix_id = values[1];
+    o.wall_meshes.push_back(mesh);
+    o.mesh_friction.push_back(FixOptions::kByType);
+    return;
+  }
   if (plane == "region") {
     if (n != 2)
       lmp->error->all(FLERR, "Fix hardcontact wall region takes one value, the region ID");
@@ -153,7 +163,7 @@ void parse_wall(LAMMPS *lmp, char **values, int n, FixOptions &o)
   else
     compat::error_all(lmp->error, FLERR,
                       "Fix hardcontact wall '{}' is unknown: use xplane, yplane, zplane, "
-                      "region or stl",
+                      "region, stl or mesh",
                       plane);
   if (dim == 2 && lmp->domain->dimension == 2)
     lmp->error->all(FLERR, "Fix hardcontact wall zplane is not allowed in a 2d simulation");
@@ -364,8 +374,9 @@ const Keyword keywords[] = {
      "wall xplane|yplane|zplane lo hi: flat walls, NULL for none, v_name for a moving one; "
      "wall region ID: the surface of a region; wall stl FILE [scale s] [move v_x v_y v_z] "
      "[rotate v_theta Px Py Pz Ax Ay Az]: a triangle mesh from an STL file (ASCII or binary), "
-     "its lengths times s, moved as region ... move/rotate; each followed by 'friction mu': "
-     "the wall's own Coulomb coefficient"},
+     "its lengths times s, moved as region ... move/rotate; wall mesh ID: LIGGGHTS's fix "
+     "mesh/surface ID (moved by its fix move/mesh); each followed by 'friction mu': the "
+     "wall's own Coulomb coefficient"},
     {"restitution", 1, 2, parse_restitution,
      "restitution e [I J]: Newton's restitution e in [0, 1] for type pairs I J (all: default)"},
     {"bounce", 1, 0, parse_bounce, "bounce vmin: contacts closing slower stay inelastic"},

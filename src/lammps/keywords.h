@@ -32,6 +32,7 @@ struct FixOptions {
   std::vector<std::string> wall_regions;      // IDs of regions whose surfaces are walls
   // triangle-mesh walls (`wall stl FILE [scale s]`): the file and the factor on its lengths
   struct MeshWall {
+    std::string fix_id;    // `wall mesh ID` (LIGGGHTS's fix mesh/surface), else the file:
     std::string file;
     double scale = 1.0;
     // `move v_x v_y v_z` (each a variable name or "" for NULL) and `rotate v_theta Px Py Pz

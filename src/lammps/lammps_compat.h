@@ -22,6 +22,7 @@
 #if HARDCONTACT_LIGGGHTS
 #include "brace_format.h"       // src/liggghts/
 #include "liggghts_members.h"    // src/liggghts/
+#include "liggghts_mesh.h"       // src/liggghts/
 #endif
 
 #include <cstdlib>
@@ -229,6 +230,30 @@ inline void region_contact_velocity(LAMMPS_NS::Region *region, double *u_wall, d
 {
   region->velocity_contact(u_wall, x, m);
 }
+#endif
+
+// ------------------------------------------------------------------------- mesh fixes
+// `wall mesh ID`: LIGGGHTS's fix mesh/surface (src/liggghts/liggghts_mesh.h). LAMMPS has no
+// triangle-mesh fix: there every call says so (a deck names its STL file with `wall stl`).
+#if HARDCONTACT_LIGGGHTS
+constexpr bool kMeshFixes = true;
+using liggghts::mesh_moving;
+using liggghts::mesh_mover_after;
+using liggghts::mesh_owned;
+using liggghts::mesh_surface_velocity;
+using liggghts::mesh_triangle;
+#else
+constexpr bool kMeshFixes = false;
+inline std::string mesh_owned(LAMMPS_NS::LAMMPS *, const std::string &, std::vector<int> &,
+                              std::vector<double> &)
+{
+  return "LAMMPS has no triangle-mesh fix (LIGGGHTS's fix mesh/surface): give the STL file "
+         "itself with 'wall stl FILE'";
+}
+inline bool mesh_triangle(LAMMPS_NS::LAMMPS *, const std::string &, int, double *) { return false; }
+inline bool mesh_moving(LAMMPS_NS::LAMMPS *, const std::string &) { return false; }
+inline std::string mesh_mover_after(LAMMPS_NS::LAMMPS *, const std::string &, int) { return ""; }
+inline bool mesh_surface_velocity(LAMMPS_NS::LAMMPS *, const std::string &) { return false; }
 #endif
 
 // ------------------------------------------------------------------------- atoms, comm

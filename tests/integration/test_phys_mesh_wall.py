@@ -22,6 +22,10 @@ corners), each once (core/mesh/triangle_mesh.h).
    same floor rising at 0.5 carries it (z = z_floor + r, vz = 0.5); 180 spheres in a drum of
    72 x 2 triangles rotating at 0.3 rad per unit time are dragged up its rising side, none
    leaves it or comes nearer its facets than r (within tol), no solve stops at maxiter.
+5. LIGGGHTS only, `wall mesh ID` on a `fix mesh/surface`: the slope of 1 read that way rolls the
+   sphere exactly as `wall stl` on the same file; a mesh floor moved by `fix move/mesh linear`
+   is the conveyor of 4; the drum of 4 turned by `fix move/mesh rotate` drags its bed up, keeps
+   every sphere within its facets, no solve at maxiter.
 Serially and under mpirun (the rank count ctest gives).
 """
 
@@ -395,8 +399,84 @@ def drum_test(args):
              "step; solves at maxiter: %g" % (overlap, tol, maxiter))
 
 
+def liggghts_mesh_fix_test(args):
+    """LIGGGHTS's own mesh walls, read through fix mesh/surface (the host rewrites the deck)."""
+    c, s = math.cos(THETA), math.sin(THETA)
+    along, normal = np.array([c, 0.0, -s]), np.array([s, 0.0, c])
+    x0, _, z0 = 0.5 * normal
+    fmt = dict(x0=repr(float(x0)), z0=repr(float(z0)), h=H, c=repr(c), s=repr(s))
+    runs = {}
+    for kind in ("stl", "fix"):
+        wd = lr.fresh_workdir("%s/lig_incline_%s" % (args.workdir, kind))
+        origin = -1.5 * along - 1.1 * np.array([0, 1, 0])
+        write_ascii_stl("%s/slope.stl" % wd, grid(origin, 0.37 * along, [0, 0.37, 0], 33, 6))
+        if kind == "stl":
+            deck = INCLINE.format(wall_setup="", wall="wall stl slope.stl", **fmt)
+        else:
+            deck = INCLINE.format(wall_setup="fix             cad all mesh/surface file slope.stl "
+                                  "type 1", wall="wall mesh cad", **fmt)
+        runs[kind] = lr.run_deck(args.lmp, deck, args.np, wd, timeout=args.timeout).thermo[-1]
+    diff = max(float(np.abs(np.asarray(runs["stl"][k]) - np.asarray(runs["fix"][k])).max())
+               for k in ("v_s", "v_vs", "v_hgt"))
+    lr.check(diff == 0.0, "LIGGGHTS wall mesh: the slope read through fix mesh/surface rolls the "
+             "sphere as wall stl on the same file, to the bit (largest difference %.3g)" % diff)
+    # the conveyor: fix move/mesh linear in place of move v_xf
+    V, MU, r = 2.0, 0.3, 0.5
+    wd = lr.fresh_workdir("%s/lig_conveyor" % args.workdir)
+    # LIGGGHTS keeps a moving mesh inside the box: this floor goes from x = -20..20 to -14..26
+    # (and bins its triangles by their size within the box: cells of 1 x 0.95)
+    write_ascii_stl("%s/floor.stl" % wd, grid([-20, -1.9, 0], [1, 0, 0], [0, 0.95, 0], 40, 4))
+    deck = CONVEYOR.format(vx=V, vz=0.0, friction="friction %g" % MU, h=H, n=300).replace(
+        "fix             hc all hardcontact tol 1e-4 friction 0.3 wall stl floor.stl move v_xf "
+        "NULL v_zf",
+        "fix             cad all mesh/surface file floor.stl type 1\n"
+        "fix             mv all move/mesh mesh cad linear %g 0 0\n"
+        "fix             hc all hardcontact tol 1e-4 friction 0.3 wall mesh cad" % V)
+    th = lr.run_deck(args.lmp, deck, args.np, wd, timeout=args.timeout).thermo[-1]
+    t = np.asarray(th["Step"], dtype=float) * H
+    tstar = 2.0 * V / (7.0 * MU)
+    vx, wy = np.asarray(th["v_vx"]), np.asarray(th["v_wy"])
+    slide, roll = t < tstar - 2 * H, t > tstar + 2 * H
+    err = max(float(np.abs(vx[slide] - MU * t[slide]).max()),
+              float(np.abs(wy[slide] + 5.0 * MU * t[slide] / (2.0 * r)).max()),
+              float(np.abs(vx[roll] - 2.0 / 7.0 * V).max()),
+              float(np.abs(wy[roll] * r + 5.0 / 7.0 * V).max()))
+    lr.check(err <= 1e-5, "LIGGGHTS wall mesh: a floor moved by fix move/mesh linear %g is the "
+             "conveyor (slides at mu g, rolls at 2/7 V from t* = %.4g; largest error %.3g)"
+             % (V, tstar, err))
+    # the drum: fix move/mesh rotate (period 2 pi / omega)
+    wd = lr.fresh_workdir("%s/lig_drum" % args.workdir)
+    R, N, omega, n, tol = 5.0, 72, 0.3, 500, 1e-4
+    tris = []
+    for k in range(N):
+        a0, a1 = 2 * math.pi * k / N, 2 * math.pi * ((k + 1) % N) / N
+        p = [(R * math.cos(a), R * math.sin(a)) for a in (a0, a1)]
+        q = [((x, 0.0, z), (x, 4.8, z)) for x, z in p]    # the periodic length: inside the box
+        tris.append((q[0][0], q[1][0], q[1][1]))
+        tris.append((q[0][0], q[1][1], q[0][1]))
+    write_ascii_stl("%s/drum.stl" % wd, tris)
+    deck = DRUM.format(omega=omega, h=H, n=n, tol=tol).replace(
+        "wall stl drum.stl rotate v_theta 0 0 0 0 1 0", "wall mesh cad").replace(
+        "fix             hc", "fix             cad all mesh/surface file drum.stl type 1\n"
+        "fix             mv all move/mesh mesh cad rotate origin 0 0 0 axis 0 1 0 period %r\n"
+        "fix             hc" % (2 * math.pi / omega), 1)
+    th = lr.run_deck(args.lmp, deck, args.np, wd, timeout=args.timeout).thermo[-1]
+    atoms = np.asarray(th["Atoms"], dtype=float)
+    reach = (R * math.cos(math.pi / N) - 0.5) / math.cos(math.pi / N)
+    rmax = float(np.asarray(th["c_rmax"]).max())
+    xc = float(np.asarray(th["v_xc"])[-1])
+    ok = (atoms.min() == atoms.max() and xc < -0.5 and rmax <= reach + tol * 0.5 + 1e-9
+          and float(np.asarray(th["f_hc[6]"]).max()) == 0
+          and float(np.asarray(th["f_hc[7]"]).max()) <= tol)
+    lr.check(ok, "LIGGGHTS wall mesh: the drum turned by fix move/mesh rotate drags its bed up "
+             "(centre of mass x %.3g < -0.5), keeps all %d spheres, none beyond the facets "
+             "(largest %.6f, bound %.6f), overlaps <= tol, no maxiter" % (xc, atoms[0], rmax, reach))
+
+
 def test():
     args = lr.test_args()
+    if getattr(args.lmp, "name", "") == "liggghts":
+        liggghts_mesh_fix_test(args)
     incline_test(args)
     floor_test(args)
     box_test(args)

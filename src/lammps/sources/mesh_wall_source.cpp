@@ -70,8 +70,12 @@ MeshWallSource::MeshWallSource(LAMMPS *lmp, int groupbit, const std::vector<Spec
     lmp_(lmp), groupbit_(groupbit)
 {
   for (const Spec &spec : specs) {
-    files_.push_back(spec.file);
+    files_.push_back(spec.fix_id.empty() ? spec.file : "mesh " + spec.fix_id);
     specs_.push_back(spec);
+    if (!spec.fix_id.empty()) {    // gathered at the first init
+      meshes_.emplace_back(std::vector<Triangle>());
+      continue;
+    }
     meshes_.emplace_back(read_everywhere(lmp, spec));
     const TriangleMesh &m = meshes_.back();
     if (lmp->comm->me != 0) continue;
@@ -99,6 +103,11 @@ void MeshWallSource::evaluate(size_t k)
 {
   Placement &p = place_[k];
   if (!p.moves()) return;
+  if (p.fix_moves) {
+    place_fix_mesh(k);
+    ++moves_;
+    return;
+  }
   lmp_->modify->clearstep_compute();
   auto value = [&](int ivar, const std::string &name) {
     const double v = lmp_->input->variable->compute_equal(ivar);
@@ -111,10 +120,9 @@ void MeshWallSource::evaluate(size_t k)
   };
   for (int d = 0; d < 3; ++d)
     if (p.move_var[d] >= 0) p.d[d] = value(p.move_var[d], specs_[k].move[d]);
-  if (p.theta_var >= 0) {
-    p.theta = value(p.theta_var, specs_[k].theta);
-    p.rotation = Eigen::AngleAxisd(p.theta, p.axis).toRotationMatrix();
-  }
+  if (p.theta_var >= 0)
+    p.rotation =
+        Eigen::AngleAxisd(value(p.theta_var, specs_[k].theta), p.axis).toRotationMatrix();
   compat::addstep_compute(lmp_->modify, lmp_->update->ntimestep + 1);
   ++moves_;
 }
@@ -123,8 +131,8 @@ void MeshWallSource::at_current_step()
 {
   for (size_t k = 0; k < place_.size(); ++k) {
     evaluate(k);
-    place_[k].velocity = Vec3::Zero();
-    place_[k].omega = 0.0;
+    place_[k].rotation_before = place_[k].rotation;
+    place_[k].d_before = place_[k].d;
   }
   ahead_ = false;
 }
@@ -135,23 +143,40 @@ void MeshWallSource::advance(double h)
   for (size_t k = 0; k < place_.size(); ++k) {
     Placement &p = place_[k];
     if (!p.moves()) continue;
-    const Vec3 d0 = p.d;
-    const double theta0 = p.theta;
+    p.rotation_before = p.rotation;
+    p.d_before = p.d;
     evaluate(k);
-    p.velocity = (p.d - d0) / h;
-    p.omega = (p.theta - theta0) / h;
   }
   ahead_ = true;
   h_ = h;
 }
 
-void MeshWallSource::init(int first_wall, double reach)
+void MeshWallSource::init(int first_wall, double reach, int fix_index)
 {
   found_.clear();    // the skin may have changed
   place_.resize(meshes_.size());
   for (size_t k = 0; k < meshes_.size(); ++k) {
     Placement &p = place_[k];
     const Spec &spec = specs_[k];
+    if (!spec.fix_id.empty()) {
+      if (p.ref_gid < 0) gather_fix_mesh(k);
+      if (compat::mesh_surface_velocity(lmp_, spec.fix_id))
+        compat::error_all(lmp_->error, FLERR,
+                          "Fix hardcontact wall mesh {}: the mesh has a surface velocity "
+                          "(surface_vel / surface_ang_vel), which the fix does not take yet: "
+                          "move the mesh with fix move/mesh, or use wall stl FILE move/rotate",
+                          spec.fix_id);
+      const std::string late = compat::mesh_mover_after(lmp_, spec.fix_id, fix_index);
+      if (!late.empty())
+        compat::error_all(lmp_->error, FLERR,
+                          "Fix hardcontact wall mesh {}: fix {} (move/mesh) comes after this "
+                          "fix, so the mesh would move after the contacts are solved: define "
+                          "fix {} before fix hardcontact",
+                          spec.fix_id, late, late);
+      p.fix_moves = compat::mesh_moving(lmp_, spec.fix_id);
+      evaluate(k);
+      continue;
+    }
     auto find = [&](const std::string &name) {
       if (name.empty()) return -1;
       const int ivar = compat::find_variable(lmp_->input->variable, name);
@@ -187,6 +212,96 @@ void MeshWallSource::init(int first_wall, double reach)
     next += m.n_features();
   }
   end_wall_ = first_wall_ + next;
+}
+
+// A mesh fix's triangles on every process, in the order of their global ids (each process
+// owns some; before LIGGGHTS's first setup every process holds them all: duplicates go).
+void MeshWallSource::gather_fix_mesh(size_t k)
+{
+  const std::string &id = specs_[k].fix_id;
+  std::vector<int> ids;
+  std::vector<double> nodes;
+  const std::string bad = compat::mesh_owned(lmp_, id, ids, nodes);
+  if (!bad.empty()) compat::error_all(lmp_->error, FLERR, "Fix hardcontact wall mesh {}: {}", id, bad);
+  const int nprocs = lmp_->comm->nprocs;
+  int mine = static_cast<int>(ids.size());
+  std::vector<int> counts(nprocs), starts(nprocs + 1, 0);
+  MPI_Allgather(&mine, 1, MPI_INT, counts.data(), 1, MPI_INT, lmp_->world);
+  for (int q = 0; q < nprocs; ++q) starts[q + 1] = starts[q] + counts[q];
+  std::vector<int> all_ids(starts[nprocs]);
+  MPI_Allgatherv(ids.data(), mine, MPI_INT, all_ids.data(), counts.data(), starts.data(),
+                 MPI_INT, lmp_->world);
+  for (int q = 0; q < nprocs; ++q) {
+    counts[q] *= 9;
+    starts[q] *= 9;
+  }
+  starts[nprocs] *= 9;
+  std::vector<double> all_nodes(starts[nprocs]);
+  MPI_Allgatherv(nodes.data(), 9 * mine, MPI_DOUBLE, all_nodes.data(), counts.data(),
+                 starts.data(), MPI_DOUBLE, lmp_->world);
+  std::vector<int> order(all_ids.size());
+  for (size_t i = 0; i < order.size(); ++i) order[i] = static_cast<int>(i);
+  std::sort(order.begin(), order.end(), [&](int a, int b) { return all_ids[a] < all_ids[b]; });
+  std::vector<Triangle> tris;
+  int last = -1;
+  Placement &p = place_[k];
+  for (const int i : order) {
+    if (all_ids[i] == last) continue;
+    last = all_ids[i];
+    Triangle t;
+    for (int v = 0; v < 3; ++v)
+      for (int d = 0; d < 3; ++d) t[v][d] = all_nodes[9 * i + 3 * v + d];
+    const Vec3 e1 = t[1] - t[0], e2 = t[2] - t[0];
+    if (p.ref_gid < 0 && e1.cross(e2).norm() > 1e-12 * e1.squaredNorm() + 0.0) {
+      p.ref_gid = last;    // the first triangle of nonzero area: its frame places the mesh
+      p.ref_origin = t[0];
+      const Vec3 a = e1.normalized(), b = (e2 - e2.dot(a) * a).normalized();
+      p.ref_frame.col(0) = a;
+      p.ref_frame.col(1) = b;
+      p.ref_frame.col(2) = a.cross(b);
+    }
+    tris.push_back(t);
+  }
+  if (tris.empty() || p.ref_gid < 0)
+    compat::error_all(lmp_->error, FLERR, "Fix hardcontact wall mesh {}: the mesh holds no "
+                      "triangle of nonzero area", id);
+  meshes_[k] = TriangleMesh(tris);
+  if (lmp_->comm->me == 0) {
+    char line[256];
+    const TriangleMesh &m = meshes_[k];
+    std::snprintf(line, sizeof line,
+                  "Fix hardcontact wall mesh %s: %d triangles, %d vertices, %d edges (%d on a "
+                  "rim or shared by more than two)\n",
+                  id.c_str(), m.n_triangles(), m.n_vertices(), m.n_edges(), m.n_boundary_edges());
+    if (lmp_->screen) std::fputs(line, lmp_->screen);
+    if (lmp_->logfile) std::fputs(line, lmp_->logfile);
+  }
+}
+
+// A moved mesh fix's placement, from where its reference triangle's nodes are now (moves of
+// fix move/mesh are rigid: one triangle's frame gives them all). The lowest process holding
+// that triangle sends its nodes.
+void MeshWallSource::place_fix_mesh(size_t k)
+{
+  Placement &p = place_[k];
+  double nodes[9] = {0.0};
+  const bool here = compat::mesh_triangle(lmp_, specs_[k].fix_id, p.ref_gid, nodes);
+  int me = here ? lmp_->comm->me : lmp_->comm->nprocs, from = 0;
+  MPI_Allreduce(&me, &from, 1, MPI_INT, MPI_MIN, lmp_->world);
+  if (from >= lmp_->comm->nprocs)
+    compat::error_all(lmp_->error, FLERR, "Fix hardcontact wall mesh {}: its triangle {} is "
+                      "held by no process", specs_[k].fix_id, p.ref_gid);
+  MPI_Bcast(nodes, 9, MPI_DOUBLE, from, lmp_->world);
+  const Vec3 o(nodes[0], nodes[1], nodes[2]);
+  const Vec3 e1 = Vec3(nodes[3], nodes[4], nodes[5]) - o, e2 = Vec3(nodes[6], nodes[7], nodes[8]) - o;
+  Eigen::Matrix3d frame;
+  const Vec3 a = e1.normalized(), b = (e2 - e2.dot(a) * a).normalized();
+  frame.col(0) = a;
+  frame.col(1) = b;
+  frame.col(2) = a.cross(b);
+  p.point = Vec3::Zero();
+  p.rotation = frame * p.ref_frame.transpose();
+  p.d = o - p.rotation * p.ref_origin;
 }
 
 // Every feature within the skin of an owned sphere: a sphere cannot move more than the skin in
@@ -226,8 +341,8 @@ const MeshWallSource::Found &MeshWallSource::rows_of(size_t k) const
 
 // Every feature within the skin of an owned sphere: a sphere cannot move more than the skin in
 // a step (the fix's skin check), so no feature it could reach is left out. A moving mesh's rows
-// carry the velocity of its surface at the contact point over the step, v + omega A x (c - P -
-// d), and offer the gap at t^{n+1} less h n . u_wall (region_wall_source.cpp).
+// carry the velocity of its surface at the contact point over the step (the displacement of
+// that material point, / h), and offer the gap at t^{n+1} less h n . u_wall (region_wall_source.cpp).
 void MeshWallSource::visit(const Bodies &, RowSink &sink) const
 {
   double **x = lmp_->atom->x;
@@ -244,7 +359,7 @@ void MeshWallSource::visit(const Bodies &, RowSink &sink) const
         const Vec3 centre(x[i][0], x[i][1], x[i][2]);
         const Vec3 normal = (c.point - centre) / c.distance;
         Vec3 u_wall = Vec3::Zero();
-        if (p.moves()) u_wall = p.velocity + (p.omega * p.axis).cross(c.point - p.point - p.d);
+        if (p.moves() && ahead_) u_wall = (c.point - p.before(p.to_mesh(c.point))) / h_;
         const double d = c.distance - radius[i] - (ahead_ ? h_ * normal.dot(u_wall) : 0.0);
         sink.offer(i, wall_body(base + c.feature), normal, d, radius[i], u_wall);
       }

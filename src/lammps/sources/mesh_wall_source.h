@@ -25,6 +25,7 @@ namespace hardcontact {
 class MeshWallSource : public ContactSource {
  public:
   struct Spec {
+    std::string fix_id;     // `wall mesh ID`: a LIGGGHTS fix mesh/surface, else:
     std::string file;
     double scale = 1.0;
     std::string move[3];    // equal-style variables of the displacement ("" for none)
@@ -32,12 +33,14 @@ class MeshWallSource : public ContactSource {
     Vec3 point = Vec3::Zero(), axis = Vec3::UnitZ();
   };
   // Reads every file (process 0 reads, every process builds the mesh); a file that cannot be
-  // read stops the run with an ERROR naming it and the problem, on every process.
+  // read stops the run with an ERROR naming it and the problem, on every process. A mesh fix's
+  // triangles are gathered at the first init (LIGGGHTS distributes them at its setup).
   MeshWallSource(LAMMPS_NS::LAMMPS *lmp, int groupbit, const std::vector<Spec> &specs);
   // first_wall: the wall index of the first mesh's first feature (after planes and regions);
   // mesh k's feature f is wall first_wall + offset(k) + f, stable across steps. reach: the
   // farthest a sphere's rows reach (largest radius + skin), which sizes the meshes' cells.
-  void init(int first_wall, double reach);
+  // fix_index: the fix's own index in Modify (a mesh fix's mover must come before it).
+  void init(int first_wall, double reach, int fix_index);
   // Moving meshes where their variables put them now (setup: q^n and the meshes at t^n).
   void at_current_step();
   // Before a step at t^{n+1} (LAMMPS's step counter already advanced): moving meshes where
@@ -58,19 +61,27 @@ class MeshWallSource : public ContactSource {
   int groupbit_;
   std::vector<std::string> files_;
   std::vector<TriangleMesh> meshes_;
-  // Where a mesh is: its displacement and angle now (at t^{n+1} after advance), and its
-  // velocity and angular velocity over the last step.
+  // Where a mesh is: x = R (X - P) + P + d for its point X in the file (or as first gathered
+  // from a mesh fix), now (at t^{n+1} after advance) and one step before. A row's u_wall is
+  // the displacement of the surface's material point at the contact over the step, / h.
   struct Placement {
     std::array<int, 3> move_var{{-1, -1, -1}};
     int theta_var = -1;
+    bool fix_moves = false;         // a mesh fix moved by fix move/mesh
+    int ref_gid = -1;               // the triangle whose nodes give a mesh fix's placement
+    Eigen::Matrix3d ref_frame;      // its frame as first gathered (columns)
+    Vec3 ref_origin = Vec3::Zero();
     Vec3 point = Vec3::Zero(), axis = Vec3::UnitZ();
-    Vec3 d = Vec3::Zero(), velocity = Vec3::Zero();
-    double theta = 0.0, omega = 0.0;
-    Eigen::Matrix3d rotation = Eigen::Matrix3d::Identity();
-    bool moves() const { return theta_var >= 0 || move_var[0] >= 0 || move_var[1] >= 0 ||
-                                move_var[2] >= 0; }
+    Vec3 d = Vec3::Zero(), d_before = Vec3::Zero();
+    Eigen::Matrix3d rotation = Eigen::Matrix3d::Identity(), rotation_before = rotation;
+    bool moves() const
+    {
+      return fix_moves || theta_var >= 0 || move_var[0] >= 0 || move_var[1] >= 0 ||
+             move_var[2] >= 0;
+    }
     Vec3 to_mesh(const Vec3 &x) const { return rotation.transpose() * (x - point - d) + point; }
     Vec3 to_world(const Vec3 &X) const { return rotation * (X - point) + point + d; }
+    Vec3 before(const Vec3 &X) const { return rotation_before * (X - point) + point + d_before; }
   };
   std::vector<Placement> place_;
   std::vector<Spec> specs_;
@@ -78,6 +89,8 @@ class MeshWallSource : public ContactSource {
   double h_ = 0.0;
   int moves_ = 0;         // counts placements: the rows found for one do not serve another
   void evaluate(size_t k);
+  void gather_fix_mesh(size_t k);
+  void place_fix_mesh(size_t k);
   std::vector<int> offset_;    // per mesh, its first feature's wall index less first_wall_
   int first_wall_ = 0, end_wall_ = 0;
   // Per mesh, the rows of every owned sphere as its step's first pass found them: the passes
