@@ -58,11 +58,7 @@ hardcontact_deck_test(NAME phys_cluster_ranks_full SCRIPT integration/test_phys_
 #               dissipation output, oblique pairs stick/slide at 7/2 mu, friction 0
 #               bit-identical to none, a spinning gas: energy never grows, linear and angular
 #               momentum exact, ranks agree
-#  mesh_wall    triangle-mesh walls from STL files: a sphere rolls down a slope of triangles at
-#               5/7 g sin as on a region plane (no bump at the edges), spheres slide across a
-#               floor of triangles (through their shared vertices) unchanged, spheres in a
-#               closed cube (binary STL) move as between plane walls and never leave it
-foreach(_effect restitution moving_wall region_wall moving_region cohesion friction mesh_wall)
+foreach(_effect restitution moving_wall region_wall moving_region cohesion friction)
   set(_hosts launcher modern liggghts)
   if(_effect MATCHES "region")
     set(_hosts launcher modern)    # LIGGGHTS 3.8 has no region walls (lammps_compat.h)
@@ -72,6 +68,21 @@ foreach(_effect restitution moving_wall region_wall moving_region cohesion frict
                           NP ${_np} LABELS physics TIMEOUT 300 HOSTS ${_hosts})
   endforeach()
 endforeach()
+
+# Triangle-mesh walls (test_phys_mesh_wall.py): a sphere rolls down a slope of triangles at
+# 5/7 g sin as on a region plane (no bump at the edges), spheres slide across a floor of
+# triangles (through their shared vertices) unchanged, spheres in a closed cube (binary STL)
+# move as between plane walls and never leave it, sliding / rising / rotating meshes (conveyor,
+# lift, drum), restart; on LIGGGHTS also `wall mesh` on fix mesh/surface and fix move/mesh.
+# Every host serially, launcher and LIGGGHTS with 2 ranks, the launcher with 4 (CI time: the
+# np 4 run takes 24 s on both cores; the meshes are searched by each sphere's owner, the same
+# code on every host).
+hardcontact_deck_test(NAME phys_mesh_wall_np1 SCRIPT integration/test_phys_mesh_wall.py
+                      NP 1 LABELS physics TIMEOUT 300 HOSTS launcher modern liggghts)
+hardcontact_deck_test(NAME phys_mesh_wall_np2 SCRIPT integration/test_phys_mesh_wall.py
+                      NP 2 LABELS physics TIMEOUT 300 HOSTS launcher liggghts)
+hardcontact_deck_test(NAME phys_mesh_wall_np4 SCRIPT integration/test_phys_mesh_wall.py
+                      NP 4 LABELS physics TIMEOUT 300 HOSTS launcher)
 
 # the same friction decks solved by nsgs (block Gauss-Seidel on the true Coulomb law, no De
 # Saxce fixed point): the analytic rolling, slipping and stopping outcomes, the oblique pair,

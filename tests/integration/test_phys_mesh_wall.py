@@ -22,7 +22,9 @@ corners), each once (core/mesh/triangle_mesh.h).
    same floor rising at 0.5 carries it (z = z_floor + r, vz = 0.5); 180 spheres in a drum of
    72 x 2 triangles rotating at 0.3 rad per unit time are dragged up its rising side, none
    leaves it or comes nearer its facets than r (within tol), no solve stops at maxiter.
-5. LIGGGHTS only, `wall mesh ID` on a `fix mesh/surface`: the slope of 1 read that way rolls the
+5. Restart: the sliding-floor conveyor split at step 100 by write_restart / read_restart (the
+   fix defined again, reading its STL again) ends as the straight run at step 250.
+6. LIGGGHTS only, `wall mesh ID` on a `fix mesh/surface`: the slope of 1 read that way rolls the
    sphere exactly as `wall stl` on the same file; a mesh floor moved by `fix move/mesh linear`
    is the conveyor of 4; the drum of 4 turned by `fix move/mesh rotate` drags its bed up, keeps
    every sphere within its facets, no solve at maxiter.
@@ -399,6 +401,29 @@ def drum_test(args):
              "step; solves at maxiter: %g" % (overlap, tol, maxiter))
 
 
+def restart_test(args):
+    V, MU = 2.0, 0.3
+    wd = lr.fresh_workdir("%s/restart" % args.workdir)
+    write_ascii_stl("%s/floor.stl" % wd, grid([-20, -1.9, 0], [1, 0, 0], [0, 0.95, 0], 40, 4))
+    head = CONVEYOR.format(vx=V, vz=0.0, friction="friction %g" % MU, h=H, n=0)
+    head = head[:head.index("run ")]
+    straight = head + "run 250\n"
+    first = head + "run 100\nwrite_restart floor.restart\n"
+    keep = ("variable", "pair_style", "neighbor", "fix", "timestep", "compute", "thermo")
+    second = "atom_modify map array\nread_restart floor.restart\n" + "\n".join(
+        line for line in head.splitlines() if line.startswith(keep)) + "\nrun 150\n"
+    a = lr.run_deck(args.lmp, straight, args.np, wd, deck_name="in.straight",
+                    log_name="log.straight", timeout=args.timeout).thermo[-1]
+    lr.run_deck(args.lmp, first, args.np, wd, deck_name="in.first", log_name="log.first",
+                timeout=args.timeout)
+    b = lr.run_deck(args.lmp, second, args.np, wd, deck_name="in.second", log_name="log.second",
+                    timeout=args.timeout).thermo[-1]
+    da = max(abs(float(a[k][-1]) - float(b[k][-1])) for k in ("v_vx", "v_wy", "v_gap"))
+    lr.check(int(float(b["Step"][-1])) == 250 and da <= 1e-6,
+             "restart: the mesh conveyor continued from step 100 ends as the straight run at step "
+             "250 (largest difference of vx, omega, gap %.3g)" % da)
+
+
 def liggghts_mesh_fix_test(args):
     """LIGGGHTS's own mesh walls, read through fix mesh/surface (the host rewrites the deck)."""
     c, s = math.cos(THETA), math.sin(THETA)
@@ -482,6 +507,7 @@ def test():
     box_test(args)
     moving_floor_test(args)
     drum_test(args)
+    restart_test(args)
 
 
 if __name__ == "__main__":
