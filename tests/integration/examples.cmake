@@ -37,6 +37,12 @@ hardcontact_deck_test(NAME example_bouncing_ball SCRIPT integration/test_example
 hardcontact_deck_test(NAME example_liggghts_settle SCRIPT integration/test_example_liggghts_settle.py
                       NP 1 LABELS examples TIMEOUT 240 HOSTS liggghts)
 
+# liggghts_hopper (LIGGGHTS decks): beads settle in and drain from a hopper read from an STL
+# file by fix mesh/surface (`wall mesh cad`), and the wall/gran mesh twin; shortened (about 820
+# beads, 0.25 s of discharge; 20 s)
+hardcontact_deck_test(NAME example_liggghts_hopper SCRIPT integration/test_example_liggghts_hopper.py
+                      NP 1 LABELS examples TIMEOUT 300 HOSTS liggghts)
+
 # heap: 300 spheres poured onto a rough floor with mu 0.1 and with mu 0.5 + rolling 0.1:
 # the angle of repose grows with friction (LAMMPS hosts; LIGGGHTS pours with fix insert/pour
 # and particle templates, another deck)
