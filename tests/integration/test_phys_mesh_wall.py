@@ -22,9 +22,13 @@ corners), each once (core/mesh/triangle_mesh.h).
    same floor rising at 0.5 carries it (z = z_floor + r, vz = 0.5); 180 spheres in a drum of
    72 x 2 triangles rotating at 0.3 rad per unit time are dragged up its rising side, none
    leaves it or comes nearer its facets than r (within tol), no solve stops at maxiter.
-5. Restart: the sliding-floor conveyor split at step 100 by write_restart / read_restart (the
+5. Cone: a sphere dropped on the axis of a 45-degree cone of 128 triangles (test_phys_region_wall's
+   hopper, radius 0.2 + z) comes to rest at the height the facets give, r / sin(atan(cos(pi /
+   64))) above the apex, within 1e-6; the same cone as a `region cone` rests it at r sqrt 2 above
+   the apex (within 1e-4, as there): the two differ by the facets alone.
+6. Restart: the sliding-floor conveyor split at step 100 by write_restart / read_restart (the
    fix defined again, reading its STL again) ends as the straight run at step 250.
-6. LIGGGHTS only, `wall mesh ID` on a `fix mesh/surface`: the slope of 1 read that way rolls the
+7. LIGGGHTS only, `wall mesh ID` on a `fix mesh/surface`: the slope of 1 read that way rolls the
    sphere exactly as `wall stl` on the same file; a mesh floor moved by `fix move/mesh linear`
    is the conveyor of 4; the drum of 4 turned by `fix move/mesh rotate` drags its bed up, keeps
    every sphere within its facets, no solve at maxiter.
@@ -401,6 +405,69 @@ def drum_test(args):
              "step; solves at maxiter: %g" % (overlap, tol, maxiter))
 
 
+CONE = """
+units           lj
+atom_style      sphere
+dimension       3
+boundary        f f f
+atom_modify     map array
+comm_modify     vel yes
+region          box block -4 4 -4 4 -1 5
+create_box      1 box
+create_atoms    1 single 0.3 0.1 2.0 units box
+set             atom 1 diameter 1.0 density 1.0
+pair_style      none
+neighbor        0.5 bin
+{setup}
+fix             hc all hardcontact tol 1e-6 {wall}
+fix             g all gravity 1.0 vector 0 0 -1
+timestep        {h}
+variable        z equal z[1]
+variable        rxy equal sqrt(x[1]^2+y[1]^2)
+thermo_style    custom step v_z v_rxy f_hc[6]
+thermo_modify   format float %.15g
+thermo          50
+run             1500
+"""
+
+
+def cone_test(args):
+    N, r = 64, 0.5
+    tris = []
+    # radius 0.2 + z from z = 0 to 3 (test_phys_region_wall's hopper), open at the bottom
+    for k in range(N):
+        a0, a1 = 2 * math.pi * k / N, 2 * math.pi * ((k + 1) % N) / N
+        low = [(0.2 * math.cos(a), 0.2 * math.sin(a), 0.0) for a in (a0, a1)]
+        top = [(3.2 * math.cos(a), 3.2 * math.sin(a), 3.0) for a in (a0, a1)]
+        tris.append((low[0], low[1], top[1]))
+        tris.append((low[0], top[1], top[0]))
+    rest = {}
+    for kind in ("mesh", "region"):
+        if kind == "region" and getattr(args.lmp, "name", "") == "liggghts":
+            continue    # no region walls on LIGGGHTS
+        wd = lr.fresh_workdir("%s/cone_%s" % (args.workdir, kind))
+        if kind == "mesh":
+            write_ascii_stl("%s/cone.stl" % wd, tris)
+            deck = CONE.format(setup="", wall="wall stl cone.stl", h=H)
+        else:
+            deck = CONE.format(setup="region cone cone z 0 0 0.2 3.2 0 3 side in units box",
+                               wall="wall region cone", h=H)
+        th = lr.run_deck(args.lmp, deck, args.np, wd, timeout=args.timeout).thermo[-1]
+        rest[kind] = (float(th["v_z"][-1]), float(th["v_rxy"][-1]))
+    # the cone's apex is at z = -0.2; each facet's plane leans at atan(cos(pi / N)) from the axis
+    facet = r / math.sin(math.atan(math.cos(math.pi / N))) - 0.2
+    round_ = r * math.sqrt(2.0) - 0.2
+    z, rxy = rest["mesh"]
+    lr.check(abs(z - facet) <= 1e-6 and rxy <= 1e-9, "cone: a sphere on the axis of a cone of %d "
+             "facets rests at r / sin(atan(cos(pi / %d))) - 0.2 = %.9f (at %.9f, %.2g off the "
+             "axis)" % (N, N, facet, z, rxy))
+    if "region" in rest:
+        zr = rest["region"][0]
+        lr.check(abs(zr - round_) <= 1e-4 and abs((z - zr) - (facet - round_)) <= 1e-4,
+                 "cone: the region cone rests it at %.6f (r sqrt 2 - 0.2 = %.6f): the mesh's "
+                 "height differs by the facets' %.2e alone" % (zr, round_, facet - round_))
+
+
 def restart_test(args):
     V, MU = 2.0, 0.3
     wd = lr.fresh_workdir("%s/restart" % args.workdir)
@@ -507,6 +574,7 @@ def test():
     box_test(args)
     moving_floor_test(args)
     drum_test(args)
+    cone_test(args)
     restart_test(args)
 
 
