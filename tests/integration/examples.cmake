@@ -43,6 +43,12 @@ hardcontact_deck_test(NAME example_liggghts_settle SCRIPT integration/test_examp
 hardcontact_deck_test(NAME example_liggghts_hopper SCRIPT integration/test_example_liggghts_hopper.py
                       NP 1 LABELS examples TIMEOUT 300 HOSTS liggghts)
 
+# mixer: a drum with 6 lifters from an STL file (wall stl ... rotate) mixes two halves of a
+# bed, and the bare drum; one revolution each (5 s); LAMMPS hosts (the deck's velocity create
+# and atom-style deletion are LAMMPS syntax)
+hardcontact_deck_test(NAME example_mixer SCRIPT integration/test_example_mixer.py
+                      NP 1 LABELS examples TIMEOUT 120 HOSTS launcher modern)
+
 # heap: 300 spheres poured onto a rough floor with mu 0.1 and with mu 0.5 + rolling 0.1:
 # the angle of repose grows with friction (LAMMPS hosts; LIGGGHTS pours with fix insert/pour
 # and particle templates, another deck)
