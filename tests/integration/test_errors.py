@@ -210,7 +210,7 @@ CASES = [
     case("warmstart_without_value", deck("warmstart"), ["warmstart needs 1 value"]),
     # walls
     case("wall_qplane", deck("wall qplane 0 1"),
-         ["wall 'qplane' is unknown", "use xplane, yplane, zplane or region"]),
+         ["wall 'qplane' is unknown", "use xplane, yplane, zplane, region, stl or mesh"]),
     case("wall_null_null", deck("wall zplane NULL NULL"), ["lo and hi cannot both be NULL"]),
     case("wall_lo_equals_hi", deck("wall zplane 3 3"), ["lo (3) must be below hi (3)"]),
     case("wall_lo_above_hi", deck("wall zplane 4 3"), ["lo (4) must be below hi (3)"]),
