@@ -19,6 +19,31 @@ import numpy as np
 
 # ------------------------------------------------------------------------------ scenes
 
+
+def write_stl(path, triangles, binary=False, name="part"):
+    """Triangles ((x, y, z) x 3 each) as an STL file, ASCII (17 digits: the vertices read back
+    to the bit) or binary (floats, as CAD tools export), for `wall stl` and fix mesh/surface.
+    The facet normals are written as zero: neither reader uses them."""
+    import struct
+    if binary:
+        with open(path, "wb") as f:
+            f.write(("%s, written by examples/common/granular.py" % name).encode()[:80].ljust(80, b" "))
+            f.write(struct.pack("<I", len(triangles)))
+            for t in triangles:
+                f.write(struct.pack("<3f", 0.0, 0.0, 0.0))
+                for v in t:
+                    f.write(struct.pack("<3f", *v))
+                f.write(b"\0\0")
+        return
+    with open(path, "w") as f:
+        f.write("solid %s\n" % name)
+        for t in triangles:
+            f.write(" facet normal 0 0 0\n  outer loop\n")
+            for v in t:
+                f.write("   vertex %.17g %.17g %.17g\n" % tuple(v))
+            f.write("  endloop\n endfacet\n")
+        f.write("endsolid %s\n" % name)
+
 def write_data(path, box, diameter, density, pos, vel=None, types=None, title="hardcontact example"):
     """LAMMPS data file for atom_style sphere, atoms numbered 1..N in the given order.
     box: ((xlo, xhi), (ylo, yhi), (zlo, zhi)); diameter, density: per atom or scalar;

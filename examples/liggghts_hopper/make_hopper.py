@@ -5,8 +5,11 @@ z = 0) up to radius 35 mm, then a cylinder up to z = 120 mm; 48 facets around, t
 rings, the cylinder in 8. Open at both ends (the outlet and the top).
     make_hopper.py OUT.stl [R_OUT_mm]"""
 import math
-import struct
+import os
 import sys
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), '../common'))
+import granular as gr    # noqa: E402
 
 out = sys.argv[1]
 r_out = float(sys.argv[2]) if len(sys.argv) > 2 else 10.0
@@ -26,12 +29,5 @@ for (r0, z0), (r1, z1) in zip(rings, rings[1:]):
     for j in range(N):
         tris.append((at(r0, z0, j), at(r0, z0, j + 1), at(r1, z1, j + 1)))
         tris.append((at(r0, z0, j), at(r1, z1, j + 1), at(r1, z1, j)))
-with open(out, "wb") as f:
-    f.write(b"hopper for examples/liggghts_hopper, mm".ljust(80, b" "))
-    f.write(struct.pack("<I", len(tris)))
-    for t in tris:
-        f.write(struct.pack("<3f", 0.0, 0.0, 0.0))
-        for v in t:
-            f.write(struct.pack("<3f", *v))
-        f.write(b"\0\0")
+gr.write_stl(out, tris, binary=True, name="hopper for examples/liggghts_hopper, mm")
 print("%s: %d triangles, outlet radius %g mm, cone up to z = %.2f mm" % (out, len(tris), r_out, z_cone))

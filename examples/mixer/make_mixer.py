@@ -5,7 +5,11 @@ radial baffles of height H reaching in from its wall (each a flat rectangle: a m
 two-sided, a sheet is a baffle). LIFTERS 0: the bare drum.
     make_mixer.py OUT.stl R L LIFTERS H"""
 import math
+import os
 import sys
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), '../common'))
+import granular as gr    # noqa: E402
 
 out, R, L, lifters, H = sys.argv[1], float(sys.argv[2]), float(sys.argv[3]), int(sys.argv[4]), float(sys.argv[5])
 N, y0, y1 = 72, -1.0, L + 1.0
@@ -26,12 +30,5 @@ for j in range(lifters):
     r_out = R
     tris.append((rim(a, r_out, y0), rim(a, R - H, y0), rim(a, R - H, y1)))
     tris.append((rim(a, r_out, y0), rim(a, R - H, y1), rim(a, r_out, y1)))
-with open(out, "w") as f:
-    f.write("solid mixer\n")
-    for t in tris:
-        f.write(" facet normal 0 0 0\n  outer loop\n")
-        for v in t:
-            f.write("   vertex %.17g %.17g %.17g\n" % v)
-        f.write("  endloop\n endfacet\n")
-    f.write("endsolid mixer\n")
+gr.write_stl(out, tris, name="mixer")
 print("%s: %d triangles (drum R = %g, %d lifters of height %g)" % (out, len(tris), R, lifters, H))

@@ -36,38 +36,47 @@ Serially and under mpirun (the rank count ctest gives).
 """
 
 import math
-import struct
+import os
+import sys
 
 import numpy as np
 
 import lammps_run as lr
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..",
+                                "examples", "common"))
+import granular as gr    # noqa: E402
+
 H = 0.01
 THETA = math.radians(20.0)
 
 
-def write_ascii_stl(path, triangles, name="part"):
-    with open(path, "w") as f:
-        f.write("solid %s\n" % name)
-        for a, b, c in triangles:
-            n = np.cross(np.subtract(b, a), np.subtract(c, a))
-            n = n / np.linalg.norm(n)
-            f.write("  facet normal %.17g %.17g %.17g\n    outer loop\n" % tuple(n))
-            for v in (a, b, c):
-                f.write("      vertex %.17g %.17g %.17g\n" % tuple(v))
-            f.write("    endloop\n  endfacet\n")
-        f.write("endsolid %s\n" % name)
+def write_ascii_stl(path, triangles):
+    gr.write_stl(path, triangles)
 
 
 def write_binary_stl(path, triangles):
-    with open(path, "wb") as f:
-        f.write(b"binary STL written by test_phys_mesh_wall".ljust(80, b" "))
-        f.write(struct.pack("<I", len(triangles)))
-        for tri in triangles:
-            f.write(struct.pack("<3f", 0.0, 0.0, 0.0))
-            for v in tri:
-                f.write(struct.pack("<3f", *v))
-            f.write(b"\0\0")
+    gr.write_stl(path, triangles, binary=True)
+
+
+def drum_triangles(R, N, y0, y1):
+    """A drum of radius R about the y axis from y0 to y1: N flat facets, 2 triangles each."""
+    tris = []
+    for k in range(N):
+        a0, a1 = 2 * math.pi * k / N, 2 * math.pi * ((k + 1) % N) / N
+        p = [(R * math.cos(a), R * math.sin(a)) for a in (a0, a1)]
+        q = [((x, y0, z), (x, y1, z)) for x, z in p]
+        tris.append((q[0][0], q[1][0], q[1][1]))
+        tris.append((q[0][0], q[1][1], q[0][1]))
+    return tris
+
+
+def slope_triangles():
+    """The 20-degree slope of test 1: cells of 0.37 along it, 33 x 6, from s = -1.5."""
+    c, s = math.cos(THETA), math.sin(THETA)
+    along = np.array([c, 0.0, -s])
+    origin = -1.5 * along - 1.1 * np.array([0, 1, 0])
+    return grid(origin, 0.37 * along, [0, 0.37, 0], 33, 6)
 
 
 def grid(origin, du, dv, nu, nv):
@@ -122,9 +131,7 @@ def incline_test(args):
     for kind in kinds:
         wd = lr.fresh_workdir("%s/incline_%s" % (args.workdir, kind))
         if kind == "mesh":
-            origin = -1.5 * along - 1.1 * np.array([0, 1, 0])
-            write_ascii_stl("%s/slope.stl" % wd,
-                            grid(origin, 0.37 * along, [0, 0.37, 0], 33, 6))
+            write_ascii_stl("%s/slope.stl" % wd, slope_triangles())
             deck = INCLINE.format(wall_setup="", wall="wall stl slope.stl", **fmt)
         else:
             deck = INCLINE.format(wall_setup="region slope plane 0 0 0 %r 0 %r side in" % (s, c),
@@ -377,14 +384,8 @@ run             {n}
 def drum_test(args):
     wd = lr.fresh_workdir("%s/drum" % args.workdir)
     R, N, omega, n, tol = 5.0, 72, 0.3, 500, 1e-4
-    tris = []
-    for k in range(N):
-        a0, a1 = 2 * math.pi * k / N, 2 * math.pi * ((k + 1) % N) / N
-        p = [(R * math.cos(a), R * math.sin(a)) for a in (a0, a1)]
-        q = [((x, -1.5, z), (x, 6.3, z)) for x, z in p]    # beyond the periodic length 4.8
-        tris.append((q[0][0], q[1][0], q[1][1]))
-        tris.append((q[0][0], q[1][1], q[0][1]))
-    write_ascii_stl("%s/drum.stl" % wd, tris)
+    # beyond the periodic length 4.8
+    write_ascii_stl("%s/drum.stl" % wd, drum_triangles(R, N, -1.5, 6.3))
     th = lr.run_deck(args.lmp, DRUM.format(omega=omega, h=H, n=n, tol=tol), args.np, wd,
                      timeout=args.timeout).thermo[-1]
     atoms = np.asarray(th["Atoms"], dtype=float)
@@ -500,8 +501,7 @@ def liggghts_mesh_fix_test(args):
     runs = {}
     for kind in ("stl", "fix"):
         wd = lr.fresh_workdir("%s/lig_incline_%s" % (args.workdir, kind))
-        origin = -1.5 * along - 1.1 * np.array([0, 1, 0])
-        write_ascii_stl("%s/slope.stl" % wd, grid(origin, 0.37 * along, [0, 0.37, 0], 33, 6))
+        write_ascii_stl("%s/slope.stl" % wd, slope_triangles())
         if kind == "stl":
             deck = INCLINE.format(wall_setup="", wall="wall stl slope.stl", **fmt)
         else:
@@ -539,14 +539,8 @@ def liggghts_mesh_fix_test(args):
     # the drum: fix move/mesh rotate (period 2 pi / omega)
     wd = lr.fresh_workdir("%s/lig_drum" % args.workdir)
     R, N, omega, n, tol = 5.0, 72, 0.3, 500, 1e-4
-    tris = []
-    for k in range(N):
-        a0, a1 = 2 * math.pi * k / N, 2 * math.pi * ((k + 1) % N) / N
-        p = [(R * math.cos(a), R * math.sin(a)) for a in (a0, a1)]
-        q = [((x, 0.0, z), (x, 4.8, z)) for x, z in p]    # the periodic length: inside the box
-        tris.append((q[0][0], q[1][0], q[1][1]))
-        tris.append((q[0][0], q[1][1], q[0][1]))
-    write_ascii_stl("%s/drum.stl" % wd, tris)
+    # the periodic length: LIGGGHTS keeps a moving mesh inside the box
+    write_ascii_stl("%s/drum.stl" % wd, drum_triangles(R, N, 0.0, 4.8))
     deck = DRUM.format(omega=omega, h=H, n=n, tol=tol).replace(
         "wall stl drum.stl rotate v_theta 0 0 0 0 1 0", "wall mesh cad").replace(
         "fix             hc", "fix             cad all mesh/surface file drum.stl type 1\n"

@@ -2,7 +2,11 @@
 """The walls of bench/compare/in.pile3d (floor z = 0, sides x, y = 0 and 11) as an ASCII STL,
 open at the top (height 40): each face split into square cells of side `cell`, two triangles
 each. Usage: make_box.py CELL OUT.stl; prints the number of triangles."""
+import os
 import sys
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), '../../../examples/common'))
+import granular as gr    # noqa: E402
 
 cell, out = float(sys.argv[1]), sys.argv[2]
 L, H = 11.0, 40.0
@@ -26,12 +30,5 @@ quad((0, 0, 0), (a, 0, 0), (0, 0, b), n, m, tris)            # y = 0
 quad((0, L, 0), (a, 0, 0), (0, 0, b), n, m, tris)            # y = L
 quad((0, 0, 0), (0, a, 0), (0, 0, b), n, m, tris)            # x = 0
 quad((L, 0, 0), (0, a, 0), (0, 0, b), n, m, tris)            # x = L
-with open(out, "w") as f:
-    f.write("solid box\n")
-    for t in tris:
-        f.write(" facet normal 0 0 0\n  outer loop\n")
-        for v in t:
-            f.write("   vertex %.17g %.17g %.17g\n" % v)
-        f.write("  endloop\n endfacet\n")
-    f.write("endsolid box\n")
+gr.write_stl(out, tris, name="box")
 print(len(tris))
