@@ -242,6 +242,7 @@ using liggghts::mesh_mover_after;
 using liggghts::mesh_owned;
 using liggghts::mesh_surface_velocity;
 using liggghts::mesh_triangle;
+using liggghts::SurfaceVelocity;
 #else
 constexpr bool kMeshFixes = false;
 inline std::string mesh_owned(LAMMPS_NS::LAMMPS *, const std::string &, std::vector<int> &,
@@ -253,7 +254,17 @@ inline std::string mesh_owned(LAMMPS_NS::LAMMPS *, const std::string &, std::vec
 inline bool mesh_triangle(LAMMPS_NS::LAMMPS *, const std::string &, int, double *) { return false; }
 inline bool mesh_moving(LAMMPS_NS::LAMMPS *, const std::string &) { return false; }
 inline std::string mesh_mover_after(LAMMPS_NS::LAMMPS *, const std::string &, int) { return ""; }
-inline bool mesh_surface_velocity(LAMMPS_NS::LAMMPS *, const std::string &) { return false; }
+struct SurfaceVelocity {
+  int kind = 0;
+  double v[3] = {0.0, 0.0, 0.0};
+  double origin[3] = {0.0, 0.0, 0.0};
+  double axis[3] = {0.0, 0.0, 1.0};
+  double omega = 0.0;
+};
+inline SurfaceVelocity mesh_surface_velocity(LAMMPS_NS::LAMMPS *, const std::string &)
+{
+  return {};
+}
 #endif
 
 // ------------------------------------------------------------------------- atoms, comm

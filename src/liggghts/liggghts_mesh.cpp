@@ -15,6 +15,49 @@ namespace liggghts {
 
 namespace {
 
+// FixMeshSurface keeps its surface velocity private: reached as liggghts_members.cpp reaches
+// Modify's and Neighbor's members (an explicit instantiation names them; each type spelled
+// out, so that a LIGGGHTS that renames or retypes one stops this file from compiling).
+template <typename Tag, typename Tag::type Member>
+struct ExposeMember {
+  friend typename Tag::type member(Tag) { return Member; }
+};
+struct VelFlag {
+  using type = bool FixMeshSurface::*;
+  friend type member(VelFlag);
+};
+struct VSurf {
+  using type = double (FixMeshSurface::*)[3];
+  friend type member(VSurf);
+};
+struct AngVelFlag {
+  using type = bool FixMeshSurface::*;
+  friend type member(AngVelFlag);
+};
+struct Origin {
+  using type = double (FixMeshSurface::*)[3];
+  friend type member(Origin);
+};
+struct Axis {
+  using type = double (FixMeshSurface::*)[3];
+  friend type member(Axis);
+};
+struct OmegaSurf {
+  using type = double FixMeshSurface::*;
+  friend type member(OmegaSurf);
+};
+
+}    // namespace
+
+template struct ExposeMember<VelFlag, &FixMeshSurface::velFlag_>;
+template struct ExposeMember<VSurf, &FixMeshSurface::vSurf_>;
+template struct ExposeMember<AngVelFlag, &FixMeshSurface::angVelFlag_>;
+template struct ExposeMember<Origin, &FixMeshSurface::origin_>;
+template struct ExposeMember<Axis, &FixMeshSurface::axis_>;
+template struct ExposeMember<OmegaSurf, &FixMeshSurface::omegaSurf_>;
+
+namespace {
+
 FixMeshSurface *mesh_fix(LAMMPS *lmp, const std::string &id)
 {
   return dynamic_cast<FixMeshSurface *>(lmp->modify->find_fix_id(id.c_str()));
@@ -75,9 +118,22 @@ std::string mesh_mover_after(LAMMPS *lmp, const std::string &id, int after_index
   return "";
 }
 
-bool mesh_surface_velocity(LAMMPS *lmp, const std::string &id)
+SurfaceVelocity mesh_surface_velocity(LAMMPS *lmp, const std::string &id)
 {
-  return mesh_fix(lmp, id)->surfaceVel();
+  FixMeshSurface *f = mesh_fix(lmp, id);
+  SurfaceVelocity s;
+  if (f->*member(VelFlag{})) {
+    s.kind = 1;
+    for (int d = 0; d < 3; ++d) s.v[d] = (f->*member(VSurf{}))[d];
+  } else if (f->*member(AngVelFlag{})) {
+    s.kind = 2;
+    for (int d = 0; d < 3; ++d) {
+      s.origin[d] = (f->*member(Origin{}))[d];
+      s.axis[d] = (f->*member(Axis{}))[d];
+    }
+    s.omega = f->*member(OmegaSurf{});
+  }
+  return s;
 }
 
 }    // namespace liggghts

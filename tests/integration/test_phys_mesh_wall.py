@@ -30,8 +30,10 @@ corners), each once (core/mesh/triangle_mesh.h).
    fix defined again, reading its STL again) ends as the straight run at step 250.
 7. LIGGGHTS only, `wall mesh ID` on a `fix mesh/surface`: the slope of 1 read that way rolls the
    sphere exactly as `wall stl` on the same file; a mesh floor moved by `fix move/mesh linear`
-   is the conveyor of 4; the drum of 4 turned by `fix move/mesh rotate` drags its bed up, keeps
-   every sphere within its facets, no solve at maxiter.
+   is the conveyor of 4, and so is a mesh at rest whose surface moves (`surface_vel`, a belt);
+   a turntable (`surface_ang_vel`) pushes a resting sphere along its surface's motion at mu g;
+   the drum of 4 turned by `fix move/mesh rotate` drags its bed up, keeps every sphere within
+   its facets, no solve at maxiter.
 Serially and under mpirun (the rank count ctest gives).
 """
 
@@ -536,6 +538,42 @@ def liggghts_mesh_fix_test(args):
     lr.check(err <= 1e-5, "LIGGGHTS wall mesh: a floor moved by fix move/mesh linear %g is the "
              "conveyor (slides at mu g, rolls at 2/7 V from t* = %.4g; largest error %.3g)"
              % (V, tstar, err))
+    # the same conveyor as a belt: the floor stays, its surface moves (surface_vel)
+    wd = lr.fresh_workdir("%s/lig_belt" % args.workdir)
+    write_ascii_stl("%s/floor.stl" % wd, grid([-20, -1.9, 0], [1, 0, 0], [0, 0.95, 0], 40, 4))
+    deck = CONVEYOR.format(vx=0.0, vz=0.0, friction="friction %g" % MU, h=H, n=300).replace(
+        "fix             hc all hardcontact tol 1e-4 friction 0.3 wall stl floor.stl move v_xf "
+        "NULL v_zf",
+        "fix             cad all mesh/surface file floor.stl type 1 surface_vel %g 0 0\n"
+        "fix             hc all hardcontact tol 1e-4 friction 0.3 wall mesh cad" % V)
+    th = lr.run_deck(args.lmp, deck, args.np, wd, timeout=args.timeout).thermo[-1]
+    vx, wy = np.asarray(th["v_vx"]), np.asarray(th["v_wy"])
+    err = max(float(np.abs(vx[slide] - MU * t[slide]).max()),
+              float(np.abs(wy[slide] + 5.0 * MU * t[slide] / (2.0 * r)).max()),
+              float(np.abs(vx[roll] - 2.0 / 7.0 * V).max()),
+              float(np.abs(wy[roll] * r + 5.0 / 7.0 * V).max()))
+    gap = float(np.abs(np.asarray(th["v_gap"])).max())
+    lr.check(err <= 1e-5 and gap <= 1e-6, "LIGGGHTS wall mesh: a belt (fix mesh/surface ... "
+             "surface_vel %g 0 0, the mesh at rest) is the same conveyor (largest error %.3g, "
+             "centre at r within %.3g)" % (V, err, gap))
+    # a turntable (surface_ang_vel): the sphere at rest 2 from the axis, the surface under it
+    # moving at omega 2 along +y, is pushed along +y at mu g while it slides
+    wd = lr.fresh_workdir("%s/lig_turntable" % args.workdir)
+    write_ascii_stl("%s/floor.stl" % wd, grid([-20, -1.9, 0], [1, 0, 0], [0, 0.95, 0], 40, 4))
+    deck = CONVEYOR.format(vx=0.0, vz=0.0, friction="friction %g" % MU, h=H, n=40).replace(
+        "fix             hc all hardcontact tol 1e-4 friction 0.3 wall stl floor.stl move v_xf "
+        "NULL v_zf",
+        "fix             cad all mesh/surface file floor.stl type 1 surface_ang_vel origin -4 0 0 "
+        "axis 0 0 1 omega 0.5\n"
+        "fix             hc all hardcontact tol 1e-4 friction 0.3 wall mesh cad").replace(
+        "variable        vz equal vz[1]", "variable        vz equal vy[1]")
+    th = lr.run_deck(args.lmp, deck, args.np, wd, timeout=args.timeout).thermo[-1]
+    t = np.asarray(th["Step"], dtype=float) * H
+    err = float(np.abs(np.asarray(th["v_vz"]) - MU * t).max())
+    # (the surface's direction under the sphere turns as it moves: 3e-6 by t = 0.4)
+    lr.check(err <= 1e-5, "LIGGGHTS wall mesh: a turntable (surface_ang_vel, omega 0.5 about an "
+             "axis 2 away) pushes the sphere along the surface's motion at mu g while it slides "
+             "(largest error %.3g over 0.4 time units)" % err)
     # the drum: fix move/mesh rotate (period 2 pi / omega)
     wd = lr.fresh_workdir("%s/lig_drum" % args.workdir)
     R, N, omega, n, tol = 5.0, 72, 0.3, 500, 1e-4

@@ -94,8 +94,36 @@ MeshWallSource::MeshWallSource(LAMMPS *lmp, int groupbit, const std::vector<Spec
 bool MeshWallSource::moving() const
 {
   for (const Placement &p : place_)
-    if (p.moves()) return true;
+    if (p.moves() || p.surface != 0) return true;
   return false;
+}
+
+// LIGGGHTS's surface velocity at contact point c of a row with normal n: the surface moves in
+// its own plane (a conveyor belt, a turning disc) and the mesh stays where it is, so only the
+// tangential part counts. With surface_vel LIGGGHTS turns the velocity into each triangle's
+// plane at its full speed (a belt around a roller); here into the row's tangent plane.
+Vec3 MeshWallSource::Placement::surface_velocity(const Vec3 &c, const Vec3 &n) const
+{
+  if (surface == 0) return Vec3::Zero();
+  Vec3 u = surface == 1 ? surface_v : Vec3(surface_omega * surface_axis.cross(c - surface_origin));
+  u -= n.dot(u) * n;
+  if (surface == 1) {
+    const double t = u.norm();
+    if (t > 0.0) u *= surface_v.norm() / t;
+  }
+  return u;
+}
+
+void MeshWallSource::read_surface_velocity(size_t k)
+{
+  Placement &p = place_[k];
+  if (specs_[k].fix_id.empty()) return;
+  const compat::SurfaceVelocity s = compat::mesh_surface_velocity(lmp_, specs_[k].fix_id);
+  p.surface = s.kind;
+  p.surface_v = Vec3(s.v[0], s.v[1], s.v[2]);
+  p.surface_origin = Vec3(s.origin[0], s.origin[1], s.origin[2]);
+  p.surface_axis = Vec3(s.axis[0], s.axis[1], s.axis[2]).normalized();
+  p.surface_omega = s.omega;
 }
 
 // The placement of mesh k from its variables now (LAMMPS's step counter gives the time).
@@ -130,6 +158,7 @@ void MeshWallSource::evaluate(size_t k)
 void MeshWallSource::at_current_step()
 {
   for (size_t k = 0; k < place_.size(); ++k) {
+    read_surface_velocity(k);
     evaluate(k);
     place_[k].rotation_before = place_[k].rotation;
     place_[k].d_before = place_[k].d;
@@ -142,6 +171,7 @@ void MeshWallSource::advance(double h)
   if (!moving()) return;
   for (size_t k = 0; k < place_.size(); ++k) {
     Placement &p = place_[k];
+    read_surface_velocity(k);    // variables of a surface velocity: LIGGGHTS's values now
     if (!p.moves()) continue;
     p.rotation_before = p.rotation;
     p.d_before = p.d;
@@ -160,12 +190,7 @@ void MeshWallSource::init(int first_wall, double reach, int fix_index)
     const Spec &spec = specs_[k];
     if (!spec.fix_id.empty()) {
       if (p.ref_gid < 0) gather_fix_mesh(k);
-      if (compat::mesh_surface_velocity(lmp_, spec.fix_id))
-        compat::error_all(lmp_->error, FLERR,
-                          "Fix hardcontact wall mesh {}: the mesh has a surface velocity "
-                          "(surface_vel / surface_ang_vel), which the fix does not take yet: "
-                          "move the mesh with fix move/mesh, or use wall stl FILE move/rotate",
-                          spec.fix_id);
+      read_surface_velocity(k);
       const std::string late = compat::mesh_mover_after(lmp_, spec.fix_id, fix_index);
       if (!late.empty())
         compat::error_all(lmp_->error, FLERR,
@@ -358,8 +383,8 @@ void MeshWallSource::visit(const Bodies &, RowSink &sink) const
         if (!(c.distance > 0.0)) continue;    // centre on the surface: no direction
         const Vec3 centre(x[i][0], x[i][1], x[i][2]);
         const Vec3 normal = (c.point - centre) / c.distance;
-        Vec3 u_wall = Vec3::Zero();
-        if (p.moves() && ahead_) u_wall = (c.point - p.before(p.to_mesh(c.point))) / h_;
+        Vec3 u_wall = p.surface_velocity(c.point, normal);
+        if (p.moves() && ahead_) u_wall += (c.point - p.before(p.to_mesh(c.point))) / h_;
         const double d = c.distance - radius[i] - (ahead_ ? h_ * normal.dot(u_wall) : 0.0);
         sink.offer(i, wall_body(base + c.feature), normal, d, radius[i], u_wall);
       }

@@ -82,6 +82,12 @@ class MeshWallSource : public ContactSource {
     Vec3 to_mesh(const Vec3 &x) const { return rotation.transpose() * (x - point - d) + point; }
     Vec3 to_world(const Vec3 &X) const { return rotation * (X - point) + point + d; }
     Vec3 before(const Vec3 &X) const { return rotation_before * (X - point) + point + d_before; }
+    // a LIGGGHTS mesh's surface velocity (surface_vel / surface_ang_vel): 0 none, 1 linear
+    // (surface_v), 2 angular (surface_omega about surface_axis through surface_origin)
+    int surface = 0;
+    Vec3 surface_v = Vec3::Zero(), surface_origin = Vec3::Zero(), surface_axis = Vec3::UnitZ();
+    double surface_omega = 0.0;
+    Vec3 surface_velocity(const Vec3 &c, const Vec3 &n) const;
   };
   std::vector<Placement> place_;
   std::vector<Spec> specs_;
@@ -91,6 +97,7 @@ class MeshWallSource : public ContactSource {
   void evaluate(size_t k);
   void gather_fix_mesh(size_t k);
   void place_fix_mesh(size_t k);
+  void read_surface_velocity(size_t k);
   std::vector<int> offset_;    // per mesh, its first feature's wall index less first_wall_
   int first_wall_ = 0, end_wall_ = 0;
   // Per mesh, the rows of every owned sphere as its step's first pass found them: the passes
