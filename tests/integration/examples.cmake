@@ -38,8 +38,8 @@ hardcontact_deck_test(NAME example_liggghts_settle SCRIPT integration/test_examp
                       NP 1 LABELS examples TIMEOUT 240 HOSTS liggghts)
 
 # liggghts_hopper (LIGGGHTS decks): beads settle in and drain from a hopper read from an STL
-# file by fix mesh/surface (`wall mesh cad`), and the wall/gran mesh twin; shortened (about 820
-# beads, 0.25 s of discharge; 20 s)
+# file by fix mesh/surface (`wall mesh cad`), and the wall/gran mesh twin; shortened (about 750
+# beads, 0.25 s of discharge; 11 s)
 hardcontact_deck_test(NAME example_liggghts_hopper SCRIPT integration/test_example_liggghts_hopper.py
                       NP 1 LABELS examples TIMEOUT 300 HOSTS liggghts)
 

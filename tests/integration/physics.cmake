@@ -74,15 +74,15 @@ endforeach()
 # triangles (through their shared vertices) unchanged, spheres in a closed cube (binary STL)
 # move as between plane walls and never leave it, sliding / rising / rotating meshes (conveyor,
 # lift, drum), restart; on LIGGGHTS also `wall mesh` on fix mesh/surface and fix move/mesh.
-# Every host serially, launcher and LIGGGHTS with 2 ranks, the launcher with 4 (CI time: the
-# np 4 run takes 24 s on both cores; the meshes are searched by each sphere's owner, the same
-# code on every host).
+# Every host serially, launcher and LIGGGHTS with 2 ranks; with 4 ranks as soak (CI time: 24-29 s
+# on both cores; the meshes are searched by each sphere's owner, the same code on every host,
+# and np 4 passes on all three hosts).
 hardcontact_deck_test(NAME phys_mesh_wall_np1 SCRIPT integration/test_phys_mesh_wall.py
                       NP 1 LABELS physics TIMEOUT 300 HOSTS launcher modern liggghts)
 hardcontact_deck_test(NAME phys_mesh_wall_np2 SCRIPT integration/test_phys_mesh_wall.py
                       NP 2 LABELS physics TIMEOUT 300 HOSTS launcher liggghts)
 hardcontact_deck_test(NAME phys_mesh_wall_np4 SCRIPT integration/test_phys_mesh_wall.py
-                      NP 4 LABELS physics TIMEOUT 300 HOSTS launcher)
+                      NP 4 LABELS physics soak TIMEOUT 300 HOSTS launcher modern liggghts)
 
 # the same friction decks solved by nsgs (block Gauss-Seidel on the true Coulomb law, no De
 # Saxce fixed point): the analytic rolling, slipping and stopping outcomes, the oblique pair,
@@ -92,8 +92,10 @@ hardcontact_deck_test(NAME phys_mesh_wall_np4 SCRIPT integration/test_phys_mesh_
 hardcontact_deck_test(NAME phys_friction_nsgs_np1 SCRIPT integration/test_phys_friction.py
                       NP 1 LABELS physics TIMEOUT 300 ARGS --solver nsgs
                       HOSTS launcher modern liggghts)
+# (np 4 is soak since 2026-12-06, CI time: 44 s on both cores; the default solver, hybrid, runs
+# nsgs sweeps under mpirun in phys_friction_np4 on every host)
 hardcontact_deck_test(NAME phys_friction_nsgs_np4 SCRIPT integration/test_phys_friction.py
-                      NP 4 LABELS physics TIMEOUT 300 ARGS --solver nsgs HOSTS launcher)
+                      NP 4 LABELS physics soak TIMEOUT 300 ARGS --solver nsgs HOSTS launcher)
 
 # the contact virial: a column at rest gives the hydrostatic stress/atom profile and pressure
 # exactly (frictionless and with friction; `fix_modify virial no` takes it out); a box
