@@ -74,13 +74,13 @@ endforeach()
 # triangles (through their shared vertices) unchanged, spheres in a closed cube (binary STL)
 # move as between plane walls and never leave it, sliding / rising / rotating meshes (conveyor,
 # lift, drum), restart; on LIGGGHTS also `wall mesh` on fix mesh/surface and fix move/mesh.
-# Every host serially, launcher and LIGGGHTS with 2 ranks; with 4 ranks as soak (CI time: 24-29 s
+# Every host serially, the launcher with 2 ranks; with 4 ranks as soak on every host (CI time: 24-29 s
 # on both cores; the meshes are searched by each sphere's owner, the same code on every host,
 # and np 4 passes on all three hosts).
 hardcontact_deck_test(NAME phys_mesh_wall_np1 SCRIPT integration/test_phys_mesh_wall.py
                       NP 1 LABELS physics TIMEOUT 300 HOSTS launcher modern liggghts)
 hardcontact_deck_test(NAME phys_mesh_wall_np2 SCRIPT integration/test_phys_mesh_wall.py
-                      NP 2 LABELS physics TIMEOUT 300 HOSTS launcher liggghts)
+                      NP 2 LABELS physics TIMEOUT 300 HOSTS launcher)
 hardcontact_deck_test(NAME phys_mesh_wall_np4 SCRIPT integration/test_phys_mesh_wall.py
                       NP 4 LABELS physics soak TIMEOUT 300 HOSTS launcher modern liggghts)
 
