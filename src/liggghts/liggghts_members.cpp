@@ -11,6 +11,8 @@
 // The explicit instantiations must appear once in the program: here, behind plain functions.
 #include "liggghts_members.h"
 
+#include "expose_member.h"
+
 #include "atom.h"
 #include "modify.h"
 #include "neighbor.h"
@@ -20,11 +22,6 @@ using namespace LAMMPS_NS;
 namespace hardcontact {
 namespace liggghts {
 namespace {
-
-template <typename Tag, typename Tag::type Member>
-struct ExposeMember {
-  friend typename Tag::type member(Tag) { return Member; }
-};
 
 struct FixMap {
   using type = FixStyles *Modify::*;

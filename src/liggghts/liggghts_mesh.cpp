@@ -1,5 +1,7 @@
 #include "liggghts_mesh.h"
 
+#include "expose_member.h"
+
 #include "abstract_mesh.h"
 #include "fix_mesh_surface.h"
 #include "fix_move_mesh.h"
@@ -18,10 +20,6 @@ namespace {
 // FixMeshSurface keeps its surface velocity private: reached as liggghts_members.cpp reaches
 // Modify's and Neighbor's members (an explicit instantiation names them; each type spelled
 // out, so that a LIGGGHTS that renames or retypes one stops this file from compiling).
-template <typename Tag, typename Tag::type Member>
-struct ExposeMember {
-  friend typename Tag::type member(Tag) { return Member; }
-};
 struct VelFlag {
   using type = bool FixMeshSurface::*;
   friend type member(VelFlag);

@@ -377,17 +377,19 @@ void MeshWallSource::visit(const Bodies &, RowSink &sink) const
     const Found &f = rows_of(k);
     const Placement &p = place_[k];
     const int base = first_wall_ + offset_[k];
-    for (int i = 0; i + 1 < static_cast<int>(f.start.size()); ++i)
+    for (int i = 0; i + 1 < static_cast<int>(f.start.size()); ++i) {
+      if (f.start[i] == f.start[i + 1]) continue;
+      const Vec3 centre(x[i][0], x[i][1], x[i][2]);
       for (int r = f.start[i]; r < f.start[i + 1]; ++r) {
         const MeshContact &c = f.rows[r];
         if (!(c.distance > 0.0)) continue;    // centre on the surface: no direction
-        const Vec3 centre(x[i][0], x[i][1], x[i][2]);
         const Vec3 normal = (c.point - centre) / c.distance;
         Vec3 u_wall = p.surface_velocity(c.point, normal);
         if (p.moves() && ahead_) u_wall += (c.point - p.before(p.to_mesh(c.point))) / h_;
         const double d = c.distance - radius[i] - (ahead_ ? h_ * normal.dot(u_wall) : 0.0);
         sink.offer(i, wall_body(base + c.feature), normal, d, radius[i], u_wall);
       }
+    }
   }
 }
 
