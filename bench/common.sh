@@ -1,9 +1,13 @@
-# The start every bench entry script shares (sourced, not run):
-#   source "$(dirname "${BASH_SOURCE[0]}")/common.sh" <work-prefix> "$@"
-# reads the optional --quick argument and sets ROOT, PY, MODE (full|quick), QUICK (the flag to
+# The start every bench entry script shares (sourced, not run): a suite's bench/<suite>/run.sh
+# sources "$(dirname "${BASH_SOURCE[0]}")/../common.sh" <work-prefix> "$@", a study's
+# bench/studies/<topic>/run.sh "$(dirname "${BASH_SOURCE[0]}")/../../common.sh" <work-prefix> "$@".
+# Reads the optional --quick argument and sets ROOT, PY, MODE (full|quick), QUICK (the flag to
 # pass on), LMP (HARDCONTACT_LMP, default build/lmp_hardcontact), SOFT_LMP (default
-# /usr/bin/lmp, Debian's LAMMPS), WORK (BENCH_WORKDIR or bench/work, then <work-prefix><MODE>)
-# and RESULTS (bench/results), and makes the two folders.
+# /usr/bin/lmp, Debian's LAMMPS), WORK (BENCH_WORKDIR or bench/work, then <work-prefix><MODE>),
+# HOST_TAG (BENCH_HOST_TAG, else the CPU model: amd-epyc, intel-xeon, ...) and RESULTS, and
+# makes the two folders. RESULTS: a suite's bench/results/<suite>/<HOST_TAG>/, a study's
+# bench/studies/<topic>/results/; a --quick run writes beside them, to <HOST_TAG>-quick/ or
+# results-quick/ (not committed). machine.txt in RESULTS records the host of the last run.
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 PY=/usr/bin/python3
 _bench_prefix="$1"
@@ -17,13 +21,31 @@ SOFT_LMP="${SOFT_LMP:-/usr/bin/lmp}"
 [ -x "$LMP" ] || { echo "no $LMP: build first (bash .ci/build.sh) or set HARDCONTACT_LMP" >&2; exit 1; }
 [ -x "$SOFT_LMP" ] || { echo "no $SOFT_LMP (Debian package lammps): set SOFT_LMP" >&2; exit 1; }
 WORK="${BENCH_WORKDIR:-$ROOT/bench/work}/$_bench_prefix$MODE"
-RESULTS="$ROOT/bench/results"
+_bench_cpu="$(sed -n 's/^model name[[:space:]]*: //p' /proc/cpuinfo | head -1)"
+HOST_TAG="${BENCH_HOST_TAG:-$(printf '%s' "${_bench_cpu:-unknown}" | tr 'A-Z' 'a-z' |
+  sed -e 's/([rR]\{1,2\})//g; s/(tm)//g; s/@.*//; s/\<\(processor\|cpu\)\>//g' \
+      -e 's/[^a-z0-9]\{1,\}/-/g; s/^-//; s/-$//')}"
+_bench_dir="$(cd "$(dirname "${BASH_SOURCE[1]}")" && pwd)"
+case "$_bench_dir" in
+  "$ROOT"/bench/studies/*) RESULTS="$_bench_dir/results" ;;
+  *) RESULTS="$ROOT/bench/results/$(basename "$_bench_dir")/$HOST_TAG" ;;
+esac
+[ "$MODE" = quick ] && RESULTS="$RESULTS-quick"
 mkdir -p "$WORK" "$RESULTS"
+{
+  echo "script: ${BASH_SOURCE[1]#"$ROOT"/} ($MODE)"
+  echo "date: $(date -u '+%Y-%m-%d %H:%M UTC')"
+  echo "cpu: ${_bench_cpu:-unknown}"
+  echo "cores: $(nproc)"
+  echo "load (1, 5, 15 min) at the start: $(cut -d' ' -f1-3 /proc/loadavg)"
+  echo "commit: $(git -C "$ROOT" rev-parse --short HEAD 2>/dev/null || echo unknown)"
+  echo "launcher: $LMP"
+} > "$RESULTS/machine.txt"
 
-# Scenes two entry scripts share (run_friction_rest.sh, run_subspace_default.sh):
+# Scenes two studies share (friction_rest, subspace_default):
 # the walls of bench/compare/in.pile3d
 PILE_WALLS="wall xplane 0 11 wall yplane 0 11 wall zplane 0 NULL"
-# bench_tray_1000 FILE: the tray of doc/performance.md section 2 (196 small spheres under one of
+# bench_tray_1000 FILE: the tray of bench/perf's section 2 (196 small spheres under one of
 # 1000 x their mass, bench/perf/scenes.py) written to FILE; prints its wall keywords
 bench_tray_1000() {
   "$PY" - "$1" <<PYEOF
@@ -77,12 +99,12 @@ write_restart   tray.restart
 EOF
 }
 
-# bench_rest_problems NAME:SETTLE ...: the scenes of bench/spectrum/scenes_run.py settled with
+# bench_rest_problems NAME:SETTLE ...: the scenes of bench/studies/spectrum/scenes_run.py settled with
 # the default solver and a window at rest dumped into $WORK (HARDCONTACT_DUMP_PROBLEMS); fills
-# PROBLEMS with NAME@STEP=FILE for the two steps run_spectrum.sh studies: the third step at
-# rest and 9 later (run_coarse_space.sh, run_amg.sh)
+# PROBLEMS with NAME@STEP=FILE for the two steps the spectrum study takes: the third step at
+# rest and 9 later (studies coarse_space and amg)
 bench_rest_problems() {
-  "$PY" "$ROOT/bench/spectrum/scenes_run.py" --lmp "$LMP" --work "$WORK" "${@%%:*}"
+  "$PY" "$ROOT/bench/studies/spectrum/scenes_run.py" --lmp "$LMP" --work "$WORK" "${@%%:*}"
   PROBLEMS=()
   local entry name settle
   for entry in "$@"; do

@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """Accuracy versus time of fix hardcontact: drives every LAMMPS run of the benchmark and
-writes the CSV files of bench/results/. Called by bench/run_accuracy.sh (see there)."""
+writes the CSV files of bench/results/. Called by bench/run.sh accuracy (see there)."""
 
 import argparse
 import csv

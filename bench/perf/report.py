@@ -1,6 +1,7 @@
 #!/usr/bin/env python3
-"""Writes doc/performance.md and doc/figures/perf_*.png from bench/results/perf_*.csv (the
-output of bench/perf/run.py). Called by bench/run_perf.sh; can be rerun alone."""
+"""Writes report.md and figures/perf_*.png beside the perf_*.csv of a results folder,
+bench/results/perf/<host>/ (the output of bench/perf/run.py). Called by bench/run.sh perf; can be
+rerun alone on a folder. The user guide, doc/performance.md, quotes its headline numbers."""
 
 import argparse
 import csv
@@ -18,8 +19,6 @@ REF = "cg"
 SOLVERS = ["cg", "apgd", "pgs", "uzawa", "exact"]
 COLORS = dict(cg="C6", apgd="C0", pgs="C1", uzawa="C2", exact="C3", soft="C4")
 STILL_KE = 1e-10    # bench/perf/run.py: "at rest" of the part still, x m g d per sphere
-# Kept from the existing doc: everything after this line (hand-written sections)
-KEEP_MARK = "<!-- report.py keeps everything below this line: hand-written sections -->"
 
 
 # Target 3's soft twin "at about 1e-3 overlap": the largest overlap measured in the soft run (as
@@ -145,7 +144,7 @@ class Report:
         return f[0] if f else None
 
     def save(self, fig, ax, xlabel, ylabel, title, name, legend=7, loglog=False):
-        """Axes, labels, legend and the PNG under doc/figures/."""
+        """Axes, labels, legend and the PNG under the report's figures/."""
         if loglog:
             ax.set_xscale("log")
             ax.set_yscale("log")
@@ -327,7 +326,7 @@ class Report:
                "velocity; measured on dumped problems of the 5-layer pile: 3-5 x tol at tol 1e-4 "
                "and at tol 1e-10 alike). Removing a factor of 4 from a residual spread over the "
                "slow modes of the pile costs about as many iterations as the conditioning allows "
-               "(section 10.1).", "")
+               "(bench/studies/spectrum, section 10.1).", "")
         r20 = next((r for r in rows if int(num(r["layers"])) == 20 and not is_variant(r)), None)
         s20 = next((r for r in rows if int(num(r["layers"])) == 20 and is_variant(r)), None)
         for r in rows:
@@ -347,7 +346,7 @@ class Report:
                                      fmt(r20["it_mean"]), products(r20), fmt(r20.get("it_mean_2nd_half")), r20["steps"]),
                                  (num(r20["it_mean"]) + (1.0 if subspace_of(r20) else 0.0)) / 30.0))
         if s20:
-            self.targets.append(("1. the same, %s subspace %d (section 10.2)" % (REF, subspace_of(s20)),
+            self.targets.append(("1. the same, %s subspace %d (bench/studies/spectrum, section 10.2)" % (REF, subspace_of(s20)),
                                  "<= 30 it/step", "%s it/step%s (%s in the second half of %s steps)" % (
                                      fmt(s20["it_mean"]), products(s20), fmt(s20.get("it_mean_2nd_half")), s20["steps"]),
                                  (num(s20["it_mean"]) + (1.0 if subspace_of(s20) else 0.0)) / 30.0))
@@ -381,12 +380,12 @@ class Report:
                "its density) on a walled 14 x 14 tray of spheres of d = 1 touching each other and the "
                "floor (lattice sc 1.0, origin 0.5 0.5 0.5); `%s` settles it, then each solver runs a "
                "window from that state (tol 1e-4, warm start). `%s` runs with its default subspace "
-               "start (`subspace %d` since 2026-12-01, section 10.2), whose one product per step (the "
+               "start (`subspace %d` since 2026-12-01, bench/studies/spectrum, section 10.2), whose one product per step (the "
                "product of the newest correction) is not in the iterations; `%s subspace 0`: the same "
                "window without it (the default before)." % (REF, REF, DEFAULT_SUBSPACE[REF], REF), "",
                table(["mass ratio", "solver", "steps", "it/step (mean)", "(2nd half)", "(median)", "(max)", "candidates",
                       "active", "ms/step", "maxiter stops", "KE end"], tab), "")
-        for r, label in ((worst, REF), (worst_sub, "%s subspace %d, section 10.2" % (REF, subspace_of(worst_sub or {})))):
+        for r, label in ((worst, REF), (worst_sub, "%s subspace %d, bench/studies/spectrum, section 10.2" % (REF, subspace_of(worst_sub or {})))):
             if r:
                 self.targets.append(("1. scene at rest, mass ratio 1..1000 (%s)" % label, "<= 10 it/step",
                                      "%s it/step%s (worst: ratio %s)" % (fmt(r["it_mean"]), products(r), r["ratio"]),
@@ -640,7 +639,7 @@ class Report:
                "Cores busy, stolen: the share of the machine's cores busy and taken by the hypervisor "
                "during the run (/proc/stat); a serial run alone keeps 50 % busy.", "")
 
-    def write(self, doc):
+    def write(self, out):
         m = self.machine
         self.findings = []
         self.equal, self.at1e3 = {}, {}
@@ -655,10 +654,11 @@ class Report:
         body = self.lines[body_start:]
         lo, hi = load_range(self.runs)
         capped = [r["id"] + (" (" + r["phase"] + ")") for r in self.runs if r.get("status") == "capped"]
-        head = ["# Performance of fix hardcontact (issue 15)", "",
-                "Generated by `bench/run_perf.sh` (%s mode) on %s; do not edit by hand: edit "
-                "`bench/perf/report.py` and rerun (`bench/perf/report.py` alone redraws from "
-                "`bench/results/perf_*.csv`). Scripts: `bench/perf/` (scenes, decks, runs, this report)." % (
+        head = ["# Performance of fix hardcontact: the perf suite's report (issue 15)", "",
+                "Generated by `bench/run.sh perf` (%s mode) on %s; do not edit by hand: edit "
+                "`bench/perf/report.py` and rerun (`bench/perf/report.py` alone redraws from the "
+                "`perf_*.csv` beside this file). Scripts: `bench/perf/` (scenes, decks, runs, this report). "
+                "What these numbers mean for a user: doc/performance.md." % (
                     m.get("mode"), m.get("date")), "",
                 "**Machine and load.** Timings were taken on a shared %s-core virtual machine (%s), "
                 "whose speed varies: identical runs of one deck were seen to differ by up to 40 %% "
@@ -666,7 +666,7 @@ class Report:
                 "times across parts or reports; every run but the 2-rank ones is a "
                 "single process (`OMP_NUM_THREADS=1`), run one at a time. Load average (1, 5, 15 min) "
                 "%s before the whole benchmark and %s after; the 1-minute load seen before/after each "
-                "run ranged over %.2f-%.2f (per run in `bench/results/perf_runs.csv`, columns "
+                "run ranged over %.2f-%.2f (per run in `perf_runs.csv`, columns "
                 "`load_before`, `load_after`). A load above 1 means a run may have shared its core: "
                 "absolute times are upper bounds; ratios of runs taken at similar load are more "
                 "trustworthy. Binary: hardcontact %s, `%s`; soft twin and LAMMPS: %s (Debian). "
@@ -686,7 +686,7 @@ class Report:
                          if any(st) else ""), ""]
         for pm in self.parts:
             other = pm.get("cpu") and pm.get("cpu") != m.get("cpu")
-            head += ["Part `%s` was run on its own (`PERF_ONLY=%s bench/run_perf.sh`) on %s: load %s "
+            head += ["Part `%s` was run on its own (`PERF_ONLY=%s bench/run.sh perf`) on %s: load %s "
                      "before and %s after, %s min, hardcontact %s%s." % (
                          pm.get("only"), pm.get("only"), pm.get("date"), pm.get("load_before"),
                          pm.get("load_after"), pm.get("minutes"), pm.get("hardcontact"),
@@ -702,20 +702,15 @@ class Report:
                  "Measured elsewhere: the 64,000-sphere pile (targets 3 and 4) is the parts `big` and "
                  "`big_stiff` (its stiffer soft twins) of this benchmark, run on their own (below when); "
                  "the 1,000,000-sphere run, memory per sphere (target 5) and the messages and reductions "
-                 "per iteration (target 4, counted) are section 7 (`bench/run_scale.sh`, "
-                 "`bench/run_mpi_calls.sh`; section 5 gives them as measured in its 2-rank runs); "
-                 "SCoPI's box_spheres_3d scene (target 3) is section 9 (`bench/run_scopi.sh`).", ""]
+                 "per iteration (target 4, counted) are in bench/scale/README.md (`bench/run.sh scale`) and "
+                 "bench/studies/mpi_calls/README.md; section 5 gives them as measured in its 2-rank runs); "
+                 "SCoPI's box_spheres_3d scene (target 3) is in bench/scopi/README.md (`bench/run.sh scopi`).", ""]
         head += self.then_and_now()
         head += ["## What the numbers say", ""] + ["- " + f for f in self.findings + self.say()] + [""]
         if capped:
             head += ["Runs stopped by their wall-time cap (the numbers cover the steps done): " +
                      ", ".join(capped) + ".", ""]
-        kept = []
-        if Path(doc).exists():
-            old = Path(doc).read_text().split("\n")
-            if KEEP_MARK in old:
-                kept = old[old.index(KEEP_MARK):]
-        Path(doc).write_text("\n".join(head + body) + "\n" + ("\n".join(kept).rstrip("\n") + "\n" if kept else ""))
+        Path(out).write_text("\n".join(head + body) + "\n")
 
     def then_and_now(self):
         """The issue's own measurements (filed with an older binary) next to this run's."""
@@ -773,10 +768,10 @@ class Report:
 def main():
     ap = argparse.ArgumentParser(description=__doc__)
     ap.add_argument("--results", required=True)
-    ap.add_argument("--doc", required=True)
+    ap.add_argument("--out", required=True, help="the report (bench/results/perf/<host>/report.md)")
     ap.add_argument("--figures", required=True)
     a = ap.parse_args()
-    Report(Path(a.results), Path(a.figures)).write(a.doc)
+    Report(Path(a.results), Path(a.figures)).write(a.out)
 
 
 if __name__ == "__main__":

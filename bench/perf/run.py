@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Performance of fix hardcontact (issue 15): drives every LAMMPS run of the benchmark, one at
-a time, and writes bench/results/perf_runs.csv (one row per run), perf_steps.csv (per-step
-solver output of the hard runs) and perf_machine.csv. Called by bench/run_perf.sh."""
+a time, and writes perf_runs.csv (one row per run), perf_steps.csv (per-step
+solver output of the hard runs) and perf_machine.csv into --results (bench/results/perf/<host>/). Called by bench/run.sh perf."""
 
 import argparse
 import csv

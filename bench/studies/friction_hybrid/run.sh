@@ -3,7 +3,7 @@
 # the crystal beds of test_stab_friction.py at tol 1e-2 and 1e-4, then examples/heap (800
 # spheres, t = 45, seed 1) and examples/drum (0.5 revolution) with apgd and hybrid side by side,
 # one process each, two at a time. About 12 minutes on 2 cores. Results:
-# bench/results/friction_hybrid.csv (beds) and friction_hybrid_scenes.txt.
+# bench/studies/friction_hybrid/results/friction_hybrid.csv (beds) and friction_hybrid_scenes.txt.
 # HARDCONTACT_LMP: the launcher (default build/lmp_hardcontact, any build from the commit that
 # added solver hybrid).
 set -euo pipefail
@@ -12,7 +12,7 @@ PY=/usr/bin/python3; [ -x "$PY" ] || PY=python3
 LMP="${HARDCONTACT_LMP:-$ROOT/build/lmp_hardcontact}"
 export HARDCONTACT_LMP="$LMP" OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
 WORK="${BENCH_WORKDIR:-$ROOT/bench/work}/friction_hybrid"
-RES="$ROOT/bench/results"
+RES="$ROOT/bench/studies/friction_hybrid/results"
 mkdir -p "$WORK" "$RES"
 echo "# $(date -u +%F) $(uname -n) $(nproc) cores, load $(cut -d' ' -f1-3 /proc/loadavg); $(git -C "$ROOT" rev-parse --short HEAD)" > "$RES/friction_hybrid.csv"
 echo "case,solver,tol,loop_s,it_mean,it_rest_mean,it_rest_max,maxiter_stops,ke_rel_rest_per_sphere" >> "$RES/friction_hybrid.csv"

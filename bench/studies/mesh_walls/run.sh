@@ -3,7 +3,7 @@
 # spheres, 10 layers, h 0.02, 150 steps) in its box of plane walls, of a region block, and of
 # STL meshes of the same box with 10 to 61,000 triangles; frictionless (the default solver) and
 # with friction 0.5. One process, one run at a time. About 2 minutes. Results:
-# bench/results/mesh_walls.csv; the table goes into bench/studies/mesh_walls/README.md.
+# bench/studies/mesh_walls/results/mesh_walls.csv; the table goes into bench/studies/mesh_walls/README.md.
 # HARDCONTACT_LMP: the launcher (default build/lmp_hardcontact; any build with `wall stl`).
 set -euo pipefail
 HERE="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
@@ -11,8 +11,8 @@ ROOT="$(cd "$HERE/../../.." && pwd)"
 PY=/usr/bin/python3; [ -x "$PY" ] || PY=python3
 LMP="${HARDCONTACT_LMP:-$ROOT/build/lmp_hardcontact}"
 WORK="${BENCH_WORKDIR:-$ROOT/bench/work}/mesh_walls"
-RES="$ROOT/bench/results/mesh_walls.csv"
-mkdir -p "$WORK"
+RES="$ROOT/bench/studies/mesh_walls/results/mesh_walls.csv"
+mkdir -p "$WORK" "$(dirname "$RES")"
 sed -e 's/hardcontact solver ${solver} wall xplane 0 11 wall yplane 0 11 wall zplane 0 NULL/hardcontact ${extra} ${walls}/' \
   -e "s/^pair_style .*/region          walls block 0 11 0 11 0 100 side in units box\n&/" "$ROOT/bench/compare/in.pile3d" > "$WORK/in.pile"
 declare -A TRIS

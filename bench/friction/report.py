@@ -1,0 +1,85 @@
+"""Table and plot of bench/results/friction/<host>/friction_front.csv (front.py): per run the observable (mean
+height at t = T), the time it took to come to rest, overlaps, iterations and the loop time, with
+the ratios against the soft twins of the same run; the plot draws the mean height against the
+loop time (soft twins as squares, the fix's default circled (grey: the default before)).
+
+  python3 bench/friction/report.py CSV
+"""
+
+import csv
+import sys
+from pathlib import Path
+
+DEFAULT = ("apgd", 1e-2, 0.02)    # the fix's default with friction (solver, tol) at the deck's h
+OLD_DEFAULT = ("apgd", 1e-4, 0.02)    # before 2026-12-04
+
+
+def load(path):
+    with open(path) as f:
+        rows = list(csv.DictReader(f))
+    for r in rows:
+        for k, v in r.items():
+            try:
+                r[k] = float(v)
+            except (TypeError, ValueError):
+                pass
+    return rows
+
+
+def main():
+    if len(sys.argv) != 2:
+        raise SystemExit(__doc__)
+    path = Path(sys.argv[1])
+    rows = load(path)
+    soft = {r["tol"]: r for r in rows if r["kind"] == "soft"}
+    hard = [r for r in rows if r["kind"] == "hard"]
+    s2, s3 = soft.get(1e-2), soft.get(1e-3)
+    out = ["| run | tol | h | mean height at T | at rest from t | largest overlap (end) | it/step (max) | maxiter stops | loop (s) | / soft 1e-2 | / soft 1e-3 |",
+           "|---|---|---|---|---|---|---|---|---|---|---|"]
+    for r in hard + list(soft.values()):
+        is_soft = r["kind"] == "soft"
+        it = "-" if is_soft else "%.0f (%.0f)" % (r["it_mean"], r["it_max"])
+        stops = "-" if is_soft else "%d" % r["maxiter_stops"]
+        ratio = lambda s: ("%.2f" % (r["loop_s"] / s["loop_s"])) if s else "-"
+        rest = "%.1f" % r["t_rest"] if r["t_rest"] == r["t_rest"] else "not by %.0f" % r["T"]
+        out.append("| %s | %s | %s | %.4f | %s | %.2g (%.2g) | %s | %s | %.1f | %s | %s |" % (
+            r["run"], "%g" % r["tol"] if not is_soft else "static overlap %g" % r["tol"],
+            "%.3g" % r["h"], r["zavg"], rest, r["overlap_max"], r["overlap_end"], it, stops,
+            r["loop_s"], ratio(s2), ratio(s3)))
+    md = path.with_suffix(".md")
+    md.write_text("\n".join(out) + "\n")
+    print("\n".join(out))
+    try:
+        import matplotlib
+        matplotlib.use("Agg")
+        import matplotlib.pyplot as plt
+    except ImportError:
+        return
+    fig, ax = plt.subplots(figsize=(7, 4.5))
+    for r in hard:
+        mk = {"apgd": "o", "nsgs": "^"}.get(r["solver"], "o")
+        ax.plot(r["loop_s"], r["zavg"], mk, color="C%d" % [0.02, 0.04, 0.08].index(r["h"]) if r["h"] in (0.02, 0.04, 0.08) else "k")
+        ax.annotate("%s %g h %g" % (r["solver"], r["tol"], r["h"]), (r["loop_s"], r["zavg"]),
+                    fontsize=7, xytext=(3, 3), textcoords="offset points")
+        if (r["solver"], r["tol"], r["h"]) == DEFAULT:
+            ax.plot(r["loop_s"], r["zavg"], "o", ms=14, mfc="none", color="k", label="default")
+        if (r["solver"], r["tol"], r["h"]) == OLD_DEFAULT:
+            ax.plot(r["loop_s"], r["zavg"], "o", ms=14, mfc="none", color="0.6", ls="none",
+                    label="default before 2026-12-04")
+    for r in soft.values():
+        ax.plot(r["loop_s"], r["zavg"], "s", color="C3")
+        ax.annotate("soft, static overlap %g" % r["tol"], (r["loop_s"], r["zavg"]), fontsize=7,
+                    xytext=(3, -9), textcoords="offset points", color="C3")
+    ax.legend(fontsize=7, loc="lower right")
+    ax.set_xscale("log")
+    ax.set_xlabel("loop time (s, one core)")
+    ax.set_ylabel("mean height of the spheres at t = %g" % hard[0]["T"])
+    ax.set_title("Frictional settle (mu 0.5), hard (colour: h 0.02 / 0.04 / 0.08) and soft twins")
+    fig.tight_layout()
+    png = path.with_suffix(".png")
+    fig.savefig(png, dpi=110)
+    print("wrote", md, png)
+
+
+if __name__ == "__main__":
+    main()

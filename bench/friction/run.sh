@@ -1,0 +1,16 @@
+#!/usr/bin/env bash
+# The frictional suite (README.md here): the 10-layer settle at every (tol, h) with its twins,
+# the heap over three seeds, then the table and the plot, into bench/results/friction/<host>/;
+# --quick checks the scripts (a small settle, one heap seed, about 5 minutes).
+#   bench/run.sh friction [--quick]        (or bench/friction/run.sh [--quick])
+# The 8000-sphere settle is separate: python3 front.py --scene settle20 --results DIR (about 4
+# minutes). FRONT_JOBS: runs of front.py at a time (default 2).
+set -euo pipefail
+# shellcheck source=../common.sh
+source "$(dirname "${BASH_SOURCE[0]}")/../common.sh" friction_front_ "$@"
+HERE="$ROOT/bench/friction"
+"$PY" "$HERE/front.py" --jobs "${FRONT_JOBS:-2}" --lmp "$LMP" --soft-lmp "$SOFT_LMP" \
+  --results "$RESULTS" "${QUICK[@]}"
+bash "$HERE/heap_front.sh" "${QUICK[@]}"
+"$PY" "$HERE/report.py" "$RESULTS/friction_front${QUICK:+_quick}.csv"
+echo "friction suite ($MODE): $RESULTS"
