@@ -21,7 +21,7 @@ GIT="$(cd "$ROOT" && git rev-parse --short HEAD 2>/dev/null || echo unknown)"
 LOAD_BEFORE="$(cut -d' ' -f1-3 /proc/loadavg)"
 T0=$SECONDS
 mpicxx -O2 -DNDEBUG -I/usr/include/hypre -I/usr/include/eigen3 \
-  "$ROOT/bench/spectrum/amg_pcg.cpp" -o "$WORK/amg_pcg" -lHYPRE
+  "$ROOT/bench/studies/amg/amg_pcg.cpp" -o "$WORK/amg_pcg" -lHYPRE
 bench_rest_problems "${NAMES[@]}"
 OUT="$RESULTS/amg.txt"
 {

@@ -21,7 +21,7 @@ NZ=20; STEPS=300; NZF=10; STEPSF=100; ROUNDS=3
 CSV="$RESULTS/mpi_calls.csv"
 [ "$MODE" = quick ] && CSV="$WORK/mpi_calls.csv"
 command -v mpicc > /dev/null || { echo "no mpicc (Debian package libopenmpi-dev)" >&2; exit 1; }
-mpicc -shared -fPIC -O2 -o "$WORK/libcount_mpi_calls.so" "$ROOT/bench/mpi_calls/count_mpi_calls.c"
+mpicc -shared -fPIC -O2 -o "$WORK/libcount_mpi_calls.so" "$ROOT/bench/studies/mpi_calls/count_mpi_calls.c"
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMP_NUM_THREADS=1
 # processors * * 1: the box is tallest in z, and LAMMPS's default grid would cut it there, leaving
 # every sphere of a low pile on one process

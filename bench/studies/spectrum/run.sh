@@ -18,14 +18,14 @@ if [ -n "$(cd "$ROOT" && git status --porcelain --untracked-files=no -- src 2>/d
   GIT="$GIT + uncommitted changes in src/"
 fi
 LOAD_BEFORE="$(cut -d' ' -f1-3 /proc/loadavg)"
-"$PY" "$ROOT/bench/spectrum/scenes_run.py" --lmp "$LMP" --work "$WORK" "${NAMES[@]%%:*}"
+"$PY" "$ROOT/bench/studies/spectrum/scenes_run.py" --lmp "$LMP" --work "$WORK" "${NAMES[@]%%:*}"
 CSV="$RESULTS/spectrum.csv"
 rm -f "$CSV"
 for entry in "${NAMES[@]}"; do
   name=${entry%%:*}
   settle=${entry##*:}
   # base: the second step at rest (its factor is reused); studied: the next one and 10 later
-  "$PY" "$ROOT/bench/spectrum/analyze.py" --out "$CSV" --log "$WORK/$name/log.rest" \
+  "$PY" "$ROOT/bench/studies/spectrum/analyze.py" --out "$CSV" --log "$WORK/$name/log.rest" \
     --label "$name" --base "$WORK/$name/problem.$((settle + 2))" \
     "$WORK/$name/problem.$((settle + 3))" "$WORK/$name/problem.$((settle + 12))"
 done
@@ -34,6 +34,6 @@ done
   echo "hardcontact $GIT (the tree when the run started)," \
        "load before $LOAD_BEFORE, after $(cut -d' ' -f1-3 /proc/loadavg), $(( SECONDS - T0 )) s"
   echo
-  "$PY" "$ROOT/bench/spectrum/report.py" --csv "$CSV" --figure "$RESULTS/spectrum.png"
+  "$PY" "$ROOT/bench/studies/spectrum/report.py" --csv "$CSV" --figure "$RESULTS/spectrum.png"
 } > "$RESULTS/spectrum.md"
 cat "$RESULTS/spectrum.md"
