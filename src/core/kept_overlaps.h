@@ -1,6 +1,6 @@
 // Frictionless rows that pushed in the last step keep a shallow overlap instead of clearing it,
 // while that keeps every solve short; the paper's clearing comes back for a step, and for the
-// steps after it, when it does not (doc/performance.md, section 10.8).
+// steps after it, when it does not (bench/studies/kept_overlaps 10.8).
 //
 // Why: at rest a solve leaves gaps within tol s of 0 (residual.h), and clearing asks the next
 // step to undo them. Its warm start is then a few tol away (section 10.2), and a frictionless
@@ -23,7 +23,7 @@
 // maxiter / kBudgetDivisor (the only bound before such a step). A stalled solve is then given
 // up after a few times what clearing would have cost, not after a tenth of maxiter: on the 2D
 // crystal of the accuracy report (cleared steps 20-60 iterations) a fixed budget of 1000 was
-// spent 4 times in 60 steps (doc/performance.md 10.10). Where keeping pays (a pile at rest:
+// spent 4 times in 60 steps (bench/studies/kept_overlaps 10.10). Where keeping pays (a pile at rest:
 // 19 against 195 per step) the budget is far above what a kept solve takes.
 #pragma once
 

@@ -1,8 +1,8 @@
 // A developer's view of one solve: the frictionless dual problem of eq. 15 as the solver
 // receives it (bodies, rows, gaps, tolerance scales, start multipliers), written as text so
 // that the operator A = h^2 G M^-1 G^T can be rebuilt and studied outside LAMMPS (its spectrum,
-// preconditioners; bench/spectrum). Not a user output: enabled by the environment variable
-// HARDCONTACT_DUMP_PROBLEMS (doc/performance.md, section 10), costs one branch per solve
+// preconditioners; bench/studies/spectrum). Not a user output: enabled by the environment variable
+// HARDCONTACT_DUMP_PROBLEMS (bench/studies/spectrum 10), costs one branch per solve
 // otherwise.
 #pragma once
 

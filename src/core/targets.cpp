@@ -10,14 +10,14 @@ namespace {
 // tol size (f_ID[7] <= tol). A packing at rest is held by static friction: pushing apart the
 // overlaps a solve left at tol asks for a motion its sticking contacts forbid, the problem
 // then nearly has no solution, its forces drift without bound and solves stall at maxiter
-// (doc/performance.md 10.6, bench/run_friction_rest.sh: a tray under a sphere of 1000 x the
+// (bench/studies/friction_rest: a tray under a sphere of 1000 x the
 // mass, at rest, 1869 -> 46 iterations per step and 23 -> 0 of 200 solves at maxiter; a
 // 968-sphere pile at rest 102 -> 47).
 // Without friction clearing stays for every row but those that pushed in the last step (the
 // warm start's force > 0), and only while that keeps solves short (kept_overlaps.h): keeping
 // every frictionless overlap, a frictionless tray under a heavy sphere needed more iterations
 // (27 -> 62 per step: rows at a target of 0 that do not push carry no force uniquely), and
-// keeping in every step stalls the solves of tight crystals (doc/performance.md 10.7-10.8).
+// keeping in every step stalls the solves of tight crystals (bench/studies/subspace_default, kept_overlaps).
 // A tenth: on the tray a hundredth still stalled (510 iterations
 // per step, a solve at maxiter), 0.3 and all of tol size gave the same iterations, and with
 // all of it curved walls, whose linearisation errs by (v h)^2 / (2 R) on top, went past tol

@@ -66,7 +66,7 @@ hardcontact::FixOptions checked_options(LAMMPS *lmp, int narg, char **arg)
                                    o.solver_name);
   // The default start of cg without friction: the span of the last 10 corrections. Loads and
   // shallow piles at rest take 8-20 x fewer iterations per step, deep piles and settles 3-6 %
-  // fewer, for one product per step and 160 bytes per contact (doc/performance.md 10.7).
+  // fewer, for one product per step and 160 bytes per contact (bench/studies/subspace_default 10.7).
   if (!o.subspace_given && o.solver_name == "cg" && !o.has_friction())
     o.settings.subspace = hardcontact::FixOptions::kDefaultSubspace;
   return o;
@@ -323,7 +323,7 @@ void FixHardContact::post_run()
   if (report_comm_) report_comm_times();
 }
 
-// What the solver's synchronisation points cost in this run (doc/performance.md, section 5):
+// What the solver's synchronisation points cost in this run (bench/perf's report, section 5):
 // per process, the forward communications (ghost velocities) and reductions, their calls and
 // seconds, including the wait for the slowest process; the mean and the largest over the
 // processes. A developers' switch (HARDCONTACT_COMM_TIMES), read by bench/perf.

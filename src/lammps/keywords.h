@@ -23,7 +23,7 @@ struct FixOptions {
   bool subspace_given = false;
   static constexpr int kDefaultSubspace = 10;
   // whether `tol` was given; if not, friction takes kFrictionTol (the measured front of
-  // doc/performance.md 11: a frictional scene's observables at 1e-2 are those at 1e-4, within
+  // bench/friction 11: a frictional scene's observables at 1e-2 are those at 1e-4, within
   // their scatter over seeds, for 7-15 x less time), the other laws SolverSettings' 1e-4
   bool tol_given = false;
   static constexpr double kFrictionTol = 1.0e-2;

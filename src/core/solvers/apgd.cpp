@@ -200,7 +200,7 @@ bool ApgdSolver<Law>::step(const SolverSettings &, std::vector<double> &mu, std:
   // numbers of the size of phi that differ by far less near the answer, and on a frictional
   // bed turned by a drum their round-off failed the test, doubled L, shortened the next step
   // and with it the margin: L ran up to 1e4-6e5 x the unit diagonal of the scaled operator and
-  // solves stopped at maxiter with residuals of 1e-3 (doc/performance.md 10.6). Without
+  // solves stopped at maxiter with residuals of 1e-3 (bench/studies/friction_rest 10.6). Without
   // friction the form in phi is kept: apgd is not the default there, and its runs stay as
   // they were.
   // sums: B == 1: phi(y), phi(next), gy.d, |d|^2, gy.(next - mu); friction: d.(gnext - gy),

@@ -1,7 +1,7 @@
 // The frictional default: nonsmooth Gauss-Seidel sweeps from the warm start, and accelerated
 // projected gradient from where they stop if they do not converge within a few sweeps.
 //
-// Why two methods (measured, doc/performance.md section 12): once friction has been mobilised
+// Why two methods (measured, bench/studies/friction_hybrid 12): once friction has been mobilised
 // (a bed that slid to rest, a pile that settled, a bed dragged by a moving wall), a frictional
 // packing at rest holds tangential forces on or near the cones' edges. From the warm start such
 // a problem is a few tolerances off, and apgd - one global step, the cones' edges seen only

@@ -7,7 +7,7 @@
 // Why it is the frictional solver: the local solve of Coulomb's law is exact and closed-form
 // (a sphere contact's block of A is diagonal), so it solves the true law - no convex relaxation
 // and no De Saxce shift to bring to a fixed point by an outer loop, which is where the
-// projected-gradient solvers spent most of their iterations (doc/performance.md 10.4, 10.6).
+// projected-gradient solvers spent most of their iterations (bench/studies/friction_deep, friction_rest).
 // The literature's comparison of frictional solvers on rigid granular sets (Acary, Bremond &
 // Huber 2018) found this family the most efficient and robust (../shared/FRICTION_SOLVERS.md).
 //

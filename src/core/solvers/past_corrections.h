@@ -2,7 +2,7 @@
 // corrections W (answer - warm start, per row block) and their products A W, kept from step to
 // step, and the best point of the dual objective phi over mu + W c.
 //
-// Why (doc/performance.md, section 10.2): at rest every step starts a few times tol away from
+// Why (bench/studies/spectrum 10.2): at rest every step starts a few times tol away from
 // its answer, in the slowest modes of A: the error one step leaves returns in the next as
 // 3 r_n - 3 r_(n-1) + r_(n-2). A first-order or Krylov method pays for those modes again every
 // step; the past corrections span them, so one N x N Galerkin solve
@@ -26,7 +26,7 @@ namespace hardcontact {
 class PastCorrections {
  public:
   // block: multipliers per row (the law's; 1 frictionless). With friction the start was tried
-  // and not kept (doc/performance.md, section 10.4): the best point of the span leaves the
+  // and not kept (bench/studies/friction_deep 10.4): the best point of the span leaves the
   // cone far, its projection raises phi, and the tangential pairs would also have to follow the
   // tangents the host derives from each step's normal.
   explicit PastCorrections(int block) : block_(block) {}
@@ -36,7 +36,7 @@ class PastCorrections {
   // refused move the next 1, 2, 4, ... kMaxSkip solves do not try: where the move is refused
   // step after step (a deep frictionless pile at rest whose sliding spheres change contacts)
   // each try cost its N x N system, a product and the rows its corrections bring into the
-  // working set, 8-14 % of the time for nothing (doc/performance.md 10.7). Every process
+  // working set, 8-14 % of the time for nothing (bench/studies/subspace_default 10.7). Every process
   // takes the same decision: the outcome of a try is a reduced sum.
   bool due()
   {
