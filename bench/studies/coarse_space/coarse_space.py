@@ -1,4 +1,4 @@
-"""Is there a small coarse space for cg on a frictionless pile at rest? (doc/performance.md,
+"""Is there a small coarse space for cg on a frictionless pile at rest? (bench/studies/coarse_space/README.md,
 section 10.13; issue 15, target 1.)
 
 Section 10.1 found that a two-level preconditioner whose coarse space holds the six uniform

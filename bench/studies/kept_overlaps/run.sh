@@ -9,7 +9,7 @@
 #             200 + 20 NZ steps and then run on until it is at rest for real (kinetic energy
 #             per sphere below 1e-10 m g d, checked every 10 steps, at most CALM steps and
 #             CALM_CAP seconds; as the
-#             part still of bench/run.sh perf, bench/perf/README.md, section 1.1) by the
+#             part still of bench/run.sh perf, the perf report (bench/results/perf/amd-epyc+intel-xeon/report.md), section 1.1) by the
 #             reference build, then a window of WINDOW steps;
 #   tray      the tray of the perf report's section 2 (196 small spheres under one of 1000 x
 #             their mass), settled 200 steps by the reference, then TRAY_WINDOW steps;
