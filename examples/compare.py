@@ -27,21 +27,21 @@ SCENES = {
 
 
 def summary(run_dir, spec, hard):
-    th = g.thermo_blocks(os.path.join(run_dir, "log.lammps"))[-1]
-    loops = g.loop_times(os.path.join(run_dir, "log.lammps"))
-    seconds = sum(l[0] for l in loops)
-    steps = sum(l[2] for l in loops)
+    th = g.read_thermo(os.path.join(run_dir, "log.lammps"))[-1]
+    loops = g.read_loop_times(os.path.join(run_dir, "log.lammps"))
+    seconds = sum(l["loop"] for l in loops)
+    steps = sum(l["steps"] for l in loops)
     t = th["Time"]
     dt = (t[-1] - t[0]) / max(1.0, th["Step"][-1] - th["Step"][0])
     frames = g.read_dump(os.path.join(run_dir, spec["dump"]))
     ov_abs, ov_rel = 0.0, 0.0
-    for _, _, cols in frames:
+    for _, cols, _ in frames:
         a, r = g.overlaps(cols, spec["walls"])
         ov_abs, ov_rel = max(ov_abs, a), max(ov_rel, r)
     if hard and "f_hc[2]" in th:
         ov_abs = max(ov_abs, float(th["f_hc[2]"].max()))
         ov_rel = max(ov_rel, float(th["f_hc[7]"].max()))
-    last = frames[-1][2]
+    last = frames[-1].columns
     top = g.bed_height(last)
     d_mean = 2.0 * float(last["radius"].mean())
     x0, x1 = spec["x"]

@@ -15,7 +15,13 @@ diameter, density.
 
 import math
 
+import sys
+from pathlib import Path
+
 import numpy as np
+
+sys.path.insert(0, str(Path(__file__).resolve().parents[2] / "python"))
+import hctools as hc  # noqa: E402
 
 D = 1.0e-3          # mean grain diameter (m)
 RHO = 2500.0        # grain density (kg/m^3)
@@ -23,24 +29,8 @@ G = 9.81            # gravity (m/s^2)
 
 
 def write_data(path, sc, title="hardcontact accuracy benchmark scene"):
-    pos, vel, dia, rho = sc["pos"], sc["vel"], sc["diameter"], sc["density"]
-    n = len(dia)
-    r = repr
-    lines = [title, "", "%d atoms" % n, "1 atom types", ""]
-    for (lo, hi), nm in zip(sc["box"], "xyz"):
-        lines.append("%s %s %slo %shi" % (r(float(lo)), r(float(hi)), nm, nm))
-    lines += ["", "Atoms # sphere", ""]
-    for i in range(n):
-        lines.append("%d 1 %s %s %s %s %s" % (i + 1, r(float(dia[i])), r(float(rho[i])),
-                                              r(float(pos[i, 0])), r(float(pos[i, 1])),
-                                              r(float(pos[i, 2]))))
-    lines += ["", "Velocities", ""]
-    for i in range(n):
-        lines.append("%d %s %s %s 0 0 0" % (i + 1, r(float(vel[i, 0])), r(float(vel[i, 1])),
-                                            r(float(vel[i, 2]))))
-    with open(str(path), "w") as f:
-        f.write("\n".join(lines) + "\n")
-
+    """The scene as a data file, every float exact (hctools.write_data)."""
+    hc.write_data(path, sc["box"], sc["diameter"], sc["density"], sc["pos"], sc["vel"], title=title)
 
 def _box_walls(width, top, ylo=0.0):
     walls = "wall xplane 0.0 %r wall yplane %r NULL" % (width, ylo)

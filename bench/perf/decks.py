@@ -1,7 +1,11 @@
 """LAMMPS decks of the performance benchmark: hardcontact runs and their soft-sphere twin
 (gran/hertz/history, frictionless, fix wall/gran, fix nve/sphere). LJ units, g = 1 along -z."""
 
-import math
+import sys
+from pathlib import Path
+
+sys.path.insert(0, str(Path(__file__).resolve().parents[2] / "python"))
+from hctools import hertz_params  # noqa: E402,F401 - the twin's settings, as decks.hertz_params
 
 HEAD = """units           lj
 dimension       3
@@ -73,27 +77,6 @@ def hard(scene, start, solver, tol, phases, h=0.02, skin=0.3, ranks_2d=False, re
         if k == 0 and restart_out:
             text += "write_restart   %s\n" % restart_out
     return text
-
-
-def hertz_params(d, v, overlap, load, restitution, steps_per_contact):
-    """Coefficients of gran/hertz/history for spheres of diameter d (density 1): kn such that a
-    static load `load` between two of them overlaps by `overlap` x d (F = kn sqrt(R_eff) delta^1.5),
-    gamma_n for the restitution at impact speed v (the fit of potentials/glass_beads.params), and
-    dt = t_c / steps_per_contact with t_c Hertz's contact time of a pair impact at v."""
-    m = math.pi / 6.0 * d ** 3
-    m_eff, r_eff = m / 2.0, d / 4.0
-    delta = overlap * d
-    kn = load / (math.sqrt(r_eff) * delta ** 1.5)
-    delta_m = (m_eff * v * v / (kn * math.sqrt(r_eff))) ** 0.4
-    lnE = -math.log(restitution)
-    b = 2.8031 * lnE * (1.0 + 0.091785 * lnE) / math.sqrt(10.425 + lnE * lnE)
-    gamma_n = b * v / (math.sqrt(r_eff) * delta_m ** 1.5)
-    # a sphere on a wall: R_eff = R, m_eff = m
-    delta_w = (m * v * v / (kn * math.sqrt(2 * r_eff))) ** 0.4
-    gamma_w = b * v / (math.sqrt(2 * r_eff) * delta_w ** 1.5)
-    t_c = 3.2181 * delta_m / v
-    return dict(kn=kn, gamma_n=gamma_n, gamma_w=gamma_w, t_c=t_c, dt=t_c / steps_per_contact,
-                impact_overlap=delta_m / d)
 
 
 SOFT = """comm_modify     vel yes

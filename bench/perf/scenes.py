@@ -2,7 +2,13 @@
 LJ units) written from numpy, so every solver, rank count and the soft twin start from the
 same atoms."""
 
+import sys
+from pathlib import Path
+
 import numpy as np
+
+sys.path.insert(0, str(Path(__file__).resolve().parents[2] / "python"))
+import hctools as hc  # noqa: E402
 
 SPACING = 1.1      # loose simple-cubic lattice of the piles
 D_MIN, D_MAX = 0.8, 1.0
@@ -10,21 +16,8 @@ OFFSET = 0.04      # largest random horizontal offset; keeps every gap of the la
 
 
 def write_data(path, box, diameter, density, x, title):
-    """LAMMPS data file, atoms 1..N of type 1, zero velocities. Floats written with repr (the
-    file holds exactly the doubles given)."""
-    x = np.asarray(x, dtype=float).reshape(-1, 3)
-    n = len(x)
-    diameter = np.broadcast_to(np.asarray(diameter, dtype=float), (n,))
-    density = np.broadcast_to(np.asarray(density, dtype=float), (n,))
-    out = [title, "", "%d atoms" % n, "1 atom types", ""]
-    for (lo, hi), ax in zip(box, "xyz"):
-        out.append("%r %r %slo %shi" % (float(lo), float(hi), ax, ax))
-    out += ["", "Atoms # sphere", ""]
-    out += ["%d 1 %r %r %r %r %r" % (i + 1, float(diameter[i]), float(density[i]),
-                                     float(x[i, 0]), float(x[i, 1]), float(x[i, 2]))
-            for i in range(n)]
-    with open(str(path), "w") as f:
-        f.write("\n".join(out) + "\n")
+    """A data file of atoms 1..N of type 1 at rest, every float exact (hctools.write_data)."""
+    hc.write_data(path, box, diameter, density, x, title=title, velocities=False)
 
 
 def pile(nx, ny, layers, seed=15):

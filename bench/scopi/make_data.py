@@ -10,9 +10,13 @@ generator, not the demo's: the same distributions, not the same draws.
     make_data.py OUT [N] [SEED]"""
 
 import math
+import os
 import sys
 
 import numpy as np
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "python"))
+import hctools as hc  # noqa: E402
 
 
 def main():
@@ -33,13 +37,10 @@ def main():
                 z = r0 + 0.1 + k * 2.0 * r0 + d[2]
                 atoms.append((2.0 * r, m / (4.0 / 3.0 * math.pi * r ** 3), x, y, z))
     top = max(a[3] for a in atoms) + 2.0
-    with open(out, "w") as f:
-        f.write("SCoPI box_spheres_3d scene: %d spheres (bench/scopi/make_data.py)\n\n" % len(atoms))
-        f.write("%d atoms\n1 atom types\n\n" % len(atoms))
-        f.write("0 %.6f xlo xhi\n-0.5 %.6f ylo yhi\n0 %.6f zlo zhi\n\nAtoms # sphere\n\n"
-                % (width, top, width))
-        for k, (dia, rho, x, y, z) in enumerate(atoms, 1):
-            f.write("%d 1 %.9g %.9g %.9g %.9g %.9g\n" % (k, dia, rho, x, y, z))
+    dia, rho, pos = zip(*[(a[0], a[1], a[2:]) for a in atoms])
+    hc.write_data(out, ((0.0, width), (-0.5, top), (0.0, width)), dia, rho, pos, velocities=False,
+                  number=lambda x: "%.9g" % x,
+                  title="SCoPI box_spheres_3d scene: %d spheres (bench/scopi/make_data.py)" % len(atoms))
 
 
 if __name__ == "__main__":

@@ -1,26 +1,16 @@
 """Kinetic energy and active contacts against time from a cluster_impact log.lammps."""
+import os
 import sys
 
 import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt
 
-
-def thermo(path):
-    rows, header = [], None
-    for line in open(path):
-        words = line.split()
-        if words[:2] == ["Step", "Time"]:
-            header = words
-        elif header and line.startswith("Loop time"):
-            break
-        elif header and len(words) == len(header):
-            rows.append([float(w) for w in words])
-    return header, rows
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "python"))
+import hctools as hc  # noqa: E402
 
 
-header, rows = thermo(sys.argv[1])
-col = {name: [r[k] for r in rows] for k, name in enumerate(header)}
+col = hc.read_thermo(sys.argv[1])[0]
 fig, ax = plt.subplots(figsize=(6, 3.5))
 ax.plot(col["Time"], col["c_ke"], "o-", label="kinetic energy (J)")
 ax.set_xlabel("time (s)")

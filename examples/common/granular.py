@@ -1,6 +1,7 @@
 """Shared helpers of the hardcontact examples (standard library + numpy; scipy if present):
-deterministic scenes written as LAMMPS data files, log and dump readers, and the measures the
-READMEs report (largest overlap, packing fraction, bed height).
+deterministic scenes (written as LAMMPS data files by the project's toolkit, python/hctools,
+whose writers and readers this module re-exports), and the measures the READMEs report
+(largest overlap, packing fraction, bed height).
 
 Why data files: create_atoms numbers atoms differently with the number of MPI ranks, and
 random() in atom-style variables is per rank; a scene written here is the same everywhere and
@@ -16,57 +17,13 @@ import sys
 
 import numpy as np
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__)))), "python"))
+# the toolkit's writers and readers, under the names the examples use
+from hctools import (read_dump, read_loop_times, read_thermo, sphere_mass,  # noqa: E402,F401
+                     write_data, write_stl)
+
 
 # ------------------------------------------------------------------------------ scenes
-
-
-def write_stl(path, triangles, binary=False, name="part"):
-    """Triangles ((x, y, z) x 3 each) as an STL file, ASCII (17 digits: the vertices read back
-    to the bit) or binary (floats, as CAD tools export), for `wall stl` and fix mesh/surface.
-    The facet normals are written as zero: neither reader uses them."""
-    import struct
-    if binary:
-        with open(path, "wb") as f:
-            f.write(("%s, written by examples/common/granular.py" % name).encode()[:80].ljust(80, b" "))
-            f.write(struct.pack("<I", len(triangles)))
-            for t in triangles:
-                f.write(struct.pack("<3f", 0.0, 0.0, 0.0))
-                for v in t:
-                    f.write(struct.pack("<3f", *v))
-                f.write(b"\0\0")
-        return
-    with open(path, "w") as f:
-        f.write("solid %s\n" % name)
-        for t in triangles:
-            f.write(" facet normal 0 0 0\n  outer loop\n")
-            for v in t:
-                f.write("   vertex %.17g %.17g %.17g\n" % tuple(v))
-            f.write("  endloop\n endfacet\n")
-        f.write("endsolid %s\n" % name)
-
-def write_data(path, box, diameter, density, pos, vel=None, types=None, title="hardcontact example"):
-    """LAMMPS data file for atom_style sphere, atoms numbered 1..N in the given order.
-    box: ((xlo, xhi), (ylo, yhi), (zlo, zhi)); diameter, density: per atom or scalar;
-    pos, vel: (N, 3); types: per atom (default 1). Floats written with repr (exact)."""
-    pos = np.asarray(pos, dtype=float).reshape(-1, 3)
-    n = len(pos)
-    diameter = np.broadcast_to(np.asarray(diameter, dtype=float), (n,))
-    density = np.broadcast_to(np.asarray(density, dtype=float), (n,))
-    vel = np.zeros((n, 3)) if vel is None else np.asarray(vel, dtype=float).reshape(n, 3)
-    types = np.ones(n, dtype=int) if types is None else np.asarray(types, dtype=int)
-    r = repr
-    lines = [title, "", "%d atoms" % n, "%d atom types" % int(types.max() if n else 1), ""]
-    for (lo, hi), name in zip(box, "xyz"):
-        lines.append("%s %s %slo %shi" % (r(float(lo)), r(float(hi)), name, name))
-    lines += ["", "Atoms # sphere", ""]
-    for i in range(n):
-        lines.append("%d %d %s %s %s %s %s" % (i + 1, types[i], r(float(diameter[i])), r(float(density[i])),
-                                               r(float(pos[i, 0])), r(float(pos[i, 1])), r(float(pos[i, 2]))))
-    lines += ["", "Velocities", ""]
-    for i in range(n):
-        lines.append("%d %s %s %s 0 0 0" % (i + 1, r(float(vel[i, 0])), r(float(vel[i, 1])), r(float(vel[i, 2]))))
-    with open(str(path), "w") as f:
-        f.write("\n".join(lines) + "\n")
 
 
 def data_args(out, count, seed):
@@ -107,77 +64,6 @@ def disc_column(width, rows, d0, spread=0.2, y0=0.0, seed=1, density=2500.0, hei
     height = height if height is not None else 2.0 * top
     box = ((0.0, width), (0.0, height), (-d0, d0))
     return box, diameter, np.full(n, density), pos, np.zeros((n, 3))
-
-
-def sphere_mass(diameter, density):
-    return math.pi / 6.0 * np.asarray(diameter) ** 3 * density
-
-
-# ------------------------------------------------------------------------------ reading
-
-def thermo_blocks(path):
-    """Thermo blocks of a LAMMPS log: list of dicts column -> numpy array (one per run)."""
-    blocks, header, rows = [], None, []
-    with open(path, errors="replace") as f:
-        for line in f:
-            words = line.split()
-            if header is None:
-                if words[:1] == ["Step"]:
-                    header, rows = words, []
-                continue
-            if line.startswith("Loop time") or line.startswith("ERROR"):
-                blocks.append(_block(header, rows))
-                header = None
-                continue
-            if len(words) == len(header):
-                try:
-                    rows.append([float(w) for w in words])
-                except ValueError:
-                    pass
-    if header is not None:
-        blocks.append(_block(header, rows))
-    return blocks
-
-
-def _block(header, rows):
-    a = np.array(rows, dtype=float).reshape(-1, len(header))
-    return {name: a[:, k] for k, name in enumerate(header)}
-
-
-def loop_times(path):
-    """[(seconds, nprocs, steps, atoms)] of every 'Loop time' line of a log."""
-    out = []
-    with open(path, errors="replace") as f:
-        for line in f:
-            if line.startswith("Loop time of"):
-                w = line.split()
-                out.append((float(w[3]), int(w[5]), int(w[8]), int(w[11])))
-    return out
-
-
-def read_dump(path):
-    """Frames of a dump custom file: list of (timestep, box (3, 2), {column: array}), rows
-    sorted by id when there is an id column."""
-    frames = []
-    with open(path) as f:
-        lines = f.read().splitlines()
-    i = 0
-    while i < len(lines):
-        if not lines[i].startswith("ITEM: TIMESTEP"):
-            i += 1
-            continue
-        step = int(lines[i + 1])
-        n = int(lines[i + 3])
-        box = np.array([[float(v) for v in lines[i + 5 + k].split()[:2]] for k in range(3)])
-        cols = lines[i + 8].split()[2:]
-        data = np.array([l.split() for l in lines[i + 9:i + 9 + n]], dtype=float).reshape(n, len(cols))
-        c = {name: data[:, k] for k, name in enumerate(cols)}
-        if "id" in c:
-            order = np.argsort(c["id"])
-            c = {k: v[order] for k, v in c.items()}
-        frames.append((step, box, c))
-        i += 9 + n
-    return frames
 
 
 # ------------------------------------------------------------------------------ measures

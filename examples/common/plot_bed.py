@@ -46,7 +46,7 @@ def main():
     for p in panels:
         d, dump, contacts, kind = p[:4]
         title = p[4] if len(p) > 4 else kind
-        step, _, cols = g.read_dump(os.path.join(d, dump))[-1]
+        step, cols, _ = g.read_dump(os.path.join(d, dump))[-1]
         cstep, rows = last_local(os.path.join(d, contacts))
         index = {int(i): k for k, i in enumerate(cols["id"])}
         seg, force = [], []

@@ -38,7 +38,7 @@ def last_local(path):
 
 
 def measure(run_dir):
-    step, box, cols = g.read_dump(os.path.join(run_dir, "packing.dump"))[-1]
+    step, cols, box = g.read_dump(os.path.join(run_dir, "packing.dump"))[-1]
     n = len(cols["id"])
     top = g.bed_height(cols, 0.99)
     phi = g.area_fraction(cols, 0.0, WIDTH, 3 * D_LARGE, top - 3 * D_LARGE)

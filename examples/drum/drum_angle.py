@@ -19,29 +19,19 @@ frame (time, angle, x_cm)."""
 import argparse
 import json
 import math
+import os
 import re
 import sys
 
 import numpy as np
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "python"))
+import hctools as hc  # noqa: E402
+
 
 def read_frames(path):
     """Every frame of a LAMMPS text dump: a list of (step, {column: array})."""
-    frames = []
-    with open(path) as f:
-        lines = f.read().splitlines()
-    k = 0
-    while k < len(lines):
-        if lines[k].startswith("ITEM: TIMESTEP"):
-            step = int(lines[k + 1])
-        elif lines[k].startswith("ITEM: NUMBER OF ATOMS"):
-            n = int(lines[k + 1])
-        elif lines[k].startswith("ITEM: ATOMS"):
-            cols = lines[k].split()[2:]
-            data = np.array([ln.split() for ln in lines[k + 1:k + 1 + n]], dtype=float)
-            frames.append((step, {c: data[:, i] for i, c in enumerate(cols)}))
-            k += n
-        k += 1
+    frames = [(fr.timestep, fr.columns) for fr in hc.read_dump(path, sort_by_id=False)]
     if not frames:
         sys.exit("no frame in %s" % path)
     return frames

@@ -28,7 +28,7 @@ WIDTH = 0.08
 def rate(run_dir):
     """(Q discs/s, mean disc mass kg, area fraction of the settled bed, mean diameter, mean disc
     area) of one run."""
-    blocks = g.thermo_blocks(os.path.join(run_dir, "log.lammps"))
+    blocks = g.read_thermo(os.path.join(run_dir, "log.lammps"))
     flow = blocks[-1]
     t = flow["Time"] - flow["Time"][0]
     n = flow["v_inside"]
@@ -36,7 +36,7 @@ def rate(run_dir):
     slope = np.polyfit(t[sel], n[sel], 1)[0]
     frames = g.read_dump(os.path.join(run_dir, "silo.dump"))
     t_open = flow["Step"][0]
-    settled = [c for s, _, c in frames if s <= t_open][-1]
+    settled = [c for s, c, _ in frames if s <= t_open][-1]
     grains = settled["type"] == 1
     cols = {k: v[grains] for k, v in settled.items()}
     r = cols["radius"]

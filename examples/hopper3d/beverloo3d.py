@@ -64,7 +64,7 @@ def packing_fraction(data):
 
 def rate(run_dir):
     """(Q beads/s, beads left out in the window, window) of one discharge run."""
-    flow = g.thermo_blocks(os.path.join(run_dir, "log.lammps"))[-1]
+    flow = g.read_thermo(os.path.join(run_dir, "log.lammps"))[-1]
     t = flow["Time"] - flow["Time"][0]
     n = flow["v_inside"]
     sel = (t >= T_SKIP - 1e-9) & (n >= KEEP * n[0])

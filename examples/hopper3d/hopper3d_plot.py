@@ -28,7 +28,7 @@ def frame_at(path, t):
     """The dump frame `t` seconds after the first one (run.sh's discharge runs: the first frame
     is the opening, frames every DUMP_DT, the decks' default dump_dt)."""
     frames = g.read_dump(path)
-    return frames[min(len(frames) - 1, int(round(t / DUMP_DT)))][2]
+    return frames[min(len(frames) - 1, int(round(t / DUMP_DT)))].columns
 
 
 def main():

@@ -25,18 +25,18 @@ LEFT = 0.30      # the fit stops when fewer than this fraction of the beads are 
 
 def measure(folder):
     log = os.path.join(folder, "log.lammps")
-    blocks = gr.thermo_blocks(log)
-    loops = gr.loop_times(log)
+    blocks = gr.read_thermo(log)
+    loops = gr.read_loop_times(log)
     settle, drain = blocks[0], blocks[-1]
     t_open = float(settle["Time"][-1])
-    t, inside = drain["Time"], drain["inside"]
+    t, inside = drain["Time"], drain["c_inside"]
     n0 = float(inside[0])
     fit = (t >= t_open + SKIP) & (inside >= LEFT * n0)
     rate = -np.polyfit(t[fit], inside[fit], 1)[0] if fit.sum() >= 3 else float("nan")
     frames = gr.read_dump(os.path.join(folder, "hopper.dump"))
     # the dump frame at the end of settling: the last one at or before the opening
-    steps_settle = loops[0][2]
-    settled = [f for f in frames if f[0] <= steps_settle][-1][2]
+    steps_settle = loops[0]["steps"]
+    settled = [f for f in frames if f.timestep <= steps_settle][-1].columns
     ov, _ = gr.overlaps(settled)
     return {
         "loops": loops, "t": t, "inside": inside, "t_open": t_open, "rate": rate,
@@ -49,7 +49,7 @@ def table(runs):
     lines = ["%-12s %9s %9s %9s %9s %11s %9s %12s" % (
         "run", "steps", "settle s", "drain s", "total s", "rate (1/s)", "bed mm", "overlap/d")]
     for label, m in runs:
-        (ts, _, ns, _), (td, _, nd, _) = m["loops"][0], m["loops"][-1]
+        (ts, ns), (td, nd) = [(m["loops"][k]["loop"], m["loops"][k]["steps"]) for k in (0, -1)]
         lines.append("%-12s %9d %9.1f %9.1f %9.1f %11.0f %9.1f %12.2e" % (
             label, ns + nd, ts, td, ts + td, m["rate"], 1000 * m["top"], m["overlap"] / 0.004))
     return "\n".join(lines)
@@ -70,9 +70,9 @@ def picture(out, runs):
     ax.legend(fontsize=8)
     ax.grid(alpha=0.3)
     for ax, (label, m) in zip(axes[1:], views):
-        h = (m["t"][-1] - m["t"][0]) / max(1, m["loops"][-1][2])    # the discharge's step
+        h = (m["t"][-1] - m["t"][0]) / max(1, m["loops"][-1]["steps"])    # the discharge's step
         target = m["steps_settle"] + round(0.3 / h)
-        step, _, c = min(m["frames"], key=lambda f: abs(f[0] - target))
+        step, c, _ = min(m["frames"], key=lambda f: abs(f.timestep - target))
         cut = np.abs(c["y"]) < 0.002
         speed = np.sqrt(c["vx"] ** 2 + c["vy"] ** 2 + c["vz"] ** 2)
         ax.scatter(1000 * c["x"][cut], 1000 * c["z"][cut], s=14, c=speed[cut], cmap="viridis",

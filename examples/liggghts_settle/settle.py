@@ -39,19 +39,19 @@ def solid_fraction(cols, z0, z1):
 
 def measure(folder):
     """The measures of one run folder, as a dict."""
-    blocks = gr.thermo_blocks(os.path.join(folder, "log.lammps"))
+    blocks = gr.read_thermo(os.path.join(folder, "log.lammps"))
     th = blocks[-1]
-    loops = gr.loop_times(os.path.join(folder, "log.lammps"))
-    _, _, cols = gr.read_dump(os.path.join(folder, "settle.dump"))[-1]
+    loops = gr.read_loop_times(os.path.join(folder, "log.lammps"))
+    cols = gr.read_dump(os.path.join(folder, "settle.dump"))[-1].columns
     ov, ov_rel = gr.overlaps(cols, WALLS)
     tops = cols["z"] + cols["radius"]
     return {
-        "steps": sum(l[2] for l in loops),
-        "loop_time": sum(l[0] for l in loops),
+        "steps": sum(l["steps"] for l in loops),
+        "loop_time": sum(l["loop"] for l in loops),
         "atoms": len(cols["id"]),
-        "time": th["Time"], "ke": th["ke"], "top": th["top"],
-        "ke_final": float(th["ke"][-1]),
-        "ke_peak": float(th["ke"].max()),
+        "time": th["Time"], "ke": th["c_ke"], "top": th["c_top"],
+        "ke_final": float(th["c_ke"][-1]),
+        "ke_peak": float(th["c_ke"].max()),
         "bed_height": float(np.quantile(tops, 0.98)),
         "solid_fraction": solid_fraction(cols, *CORE),
         "overlap": ov, "overlap_rel": ov_rel,

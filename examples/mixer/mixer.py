@@ -50,22 +50,22 @@ def measure(folder):
     m = [x for x in re.finditer(r"^mixer: R (\S+) L (\S+) lifters (\S+) omega (\S+) dt (\S+) "
                                 r"revolution (\S+)", text, re.M) if "$" not in x.group(0)][-1]
     omega, dt, rev = float(m.group(4)), float(m.group(5)), float(m.group(6))
-    loops = gr.loop_times(log)
+    loops = gr.read_loop_times(log)
     frames = gr.read_dump(os.path.join(folder, "mixer.dump"))
-    nset = loops[0][2]
+    nset = loops[0]["steps"]
     revs, mix = [], []
-    for step, _, c in frames:
+    for step, c, _ in frames:
         if step < nset:
             continue
         revs.append((step - nset) * dt / rev)
         mix.append(lacey(c))
-    th = gr.thermo_blocks(log)[-1]
+    th = gr.read_thermo(log)[-1]
     R = float(m.group(1))
     theta_end = omega * (frames[-1][0] - nset) * dt
     return {"lifters": int(m.group(3)), "rev_time": rev, "loops": loops, "R": R,
             "theta_end": theta_end, "lifter_height": LIFTER_HEIGHT,
-            "seconds_per_rev": loops[-1][0] / ((loops[-1][2] * dt) / rev),
-            "revs": np.array(revs), "mix": np.array(mix), "end": frames[-1][2],
+            "seconds_per_rev": loops[-1]["loop"] / ((loops[-1]["steps"] * dt) / rev),
+            "revs": np.array(revs), "mix": np.array(mix), "end": frames[-1].columns,
             "atoms": th["Atoms"], "rmax": float(th["c_rmax"].max()),
             "overlap": float(th["f_hc[7]"].max()), "maxiter": float(th["f_hc[6]"].max()),
             "iterations": float(th["f_hc[1]"].mean())}

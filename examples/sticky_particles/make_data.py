@@ -9,7 +9,11 @@ no velocity along y or z, so every contact normal is exactly +-x).
 """
 import math
 import random
+import os
 import sys
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "python"))
+import hctools as hc  # noqa: E402
 
 
 def particles(n=20, seed=37):
@@ -25,16 +29,11 @@ def main():
     seed = int(sys.argv[2]) if len(sys.argv) > 2 else 37
     q, u, r = particles(n, seed)
     dens = 1.0 / (4.0 / 3.0 * math.pi * r ** 3)        # unit mass
-    out = sys.stdout
-    out.write("# sticky particles (Maury 2006, section 6.2): N=%d seed=%d, radius %.17g, mass 1\n\n" % (n, seed, r))
-    out.write("%d atoms\n1 atom types\n\n" % n)
-    out.write("-1.0 2.0 xlo xhi\n-0.5 0.5 ylo yhi\n-0.5 0.5 zlo zhi\n\n")
-    out.write("Atoms # sphere\n\n")
-    for i in range(n):
-        out.write("%d 1 %.17g %.17g %.17g 0 0\n" % (i + 1, 2 * r, dens, q[i]))
-    out.write("\nVelocities\n\n")
-    for i in range(n):
-        out.write("%d %.17g 0 0 0 0 0\n" % (i + 1, u[i]))
+    zero = [0.0] * n
+    hc.write_data("/dev/stdout", ((-1.0, 2.0), (-0.5, 0.5), (-0.5, 0.5)), 2 * r, dens,
+                  list(zip(q, zero, zero)), list(zip(u, zero, zero)), number=lambda x: "%.17g" % x,
+                  title="# sticky particles (Maury 2006, section 6.2): N=%d seed=%d, radius %.17g, mass 1"
+                  % (n, seed, r))
 
 
 if __name__ == "__main__":

@@ -13,27 +13,14 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, HERE)
 import make_data           # noqa: E402
 import sticky_exact as se  # noqa: E402
+sys.path.insert(0, os.path.join(HERE, "..", "..", "python"))
+import hctools as hc       # noqa: E402
 
 
 def read_dump(path):
-    """{step: (ids, x, vx)} from a dump custom id x vx ..."""
-    frames, lines = {}, open(path).read().splitlines()
-    i = 0
-    while i < len(lines):
-        if lines[i].startswith("ITEM: TIMESTEP"):
-            step = int(lines[i + 1])
-            n = int(lines[i + 3])
-            cols = lines[i + 8].split()[2:]
-            rows = [lines[i + 9 + k].split() for k in range(n)]
-            ids = [int(r[cols.index("id")]) for r in rows]
-            xs = [float(r[cols.index("x")]) for r in rows]
-            vs = [float(r[cols.index("vx")]) for r in rows]
-            order = sorted(range(n), key=lambda k: ids[k])
-            frames[step] = ([ids[k] for k in order], [xs[k] for k in order], [vs[k] for k in order])
-            i += 9 + n
-        else:
-            i += 1
-    return frames
+    """{step: (ids, x, vx)} from a dump custom id x vx ..., sorted by id."""
+    return {fr.timestep: (list(fr.columns["id"]), list(fr.columns["x"]), list(fr.columns["vx"]))
+            for fr in hc.read_dump(path)}
 
 
 def clusters(x, v, r, tol=1e-3):

@@ -1,5 +1,5 @@
-"""Shared pieces of the physics deck tests (test_phys_*.py): a deterministic data-file writer
-for atom_style sphere, the masses LAMMPS gives such atoms, and a few checks on dumps.
+"""Shared pieces of the physics deck tests (test_phys_*.py): data files of spheres given by
+radius (hctools writes them), the masses LAMMPS gives such atoms, and a few checks on dumps.
 
 Why a data file: create_atoms numbers atoms differently with the number of MPI ranks and
 random() in atom-style variables is per rank, so decks meant to be compared across rank counts
@@ -11,6 +11,7 @@ import math
 import numpy as np
 
 import lammps_run as lr
+import hctools as hc    # on sys.path through lammps_run
 
 # dump custom columns of the tests (f_hc = the fix); the decks add format float %.16g or %.17g
 DUMP_COLUMNS = "id type radius mass x y z vx vy vz f_hc[1] f_hc[2] f_hc[3] f_hc[4]"
@@ -61,41 +62,16 @@ run             {n}
 def sphere_mass(radius, density):
     """Mass LAMMPS gives an atom_style sphere atom from a data file (diameter, density) or
     `set density`: 4/3 pi r^3 rho, also in 2d (what the paper's 6.3 wants: spheres in a
-    plane; LIGGGHTS in 2d: see write_sphere_data)."""
-    return 4.0 / 3.0 * math.pi * radius ** 3 * density
+    plane; LIGGGHTS in 2d: hctools.write_data's host)."""
+    return hc.sphere_mass(2.0 * np.asarray(radius, dtype=float), density)
 
 
 def write_sphere_data(path, box, radius, density, x, v=None, title="hardcontact physics test",
                       host=None, dimension=3):
-    """Write a LAMMPS data file for atom_style sphere, atoms numbered 1..N in the given order,
-    type 1. box = ((xlo, xhi), (ylo, yhi), (zlo, zhi)); radius, density: per atom (or scalar);
-    x: (N, 3) positions; v: (N, 3) velocities (default 0). Floats are written with repr, so
-    the file holds exactly the doubles given.
-    host, dimension: the Host that reads the file and the deck's dimension. In a 2d box
-    LIGGGHTS gives a sphere the mass of a disc, pi r^2 rho, where LAMMPS gives 4/3 pi r^3 rho;
-    for LIGGGHTS the file then holds the density 4/3 r rho, so that both hosts simulate the same
-    masses (sphere_mass) and the measured bounds of the tests hold on both."""
-    x = np.asarray(x, dtype=float).reshape(-1, 3)
-    n = len(x)
-    radius = np.broadcast_to(np.asarray(radius, dtype=float), (n,))
-    density = np.broadcast_to(np.asarray(density, dtype=float), (n,))
-    if dimension == 2 and getattr(host, "name", None) == "liggghts":
-        density = density * (4.0 / 3.0) * radius
-    v = np.zeros((n, 3)) if v is None else np.asarray(v, dtype=float).reshape(n, 3)
-    r = repr
-    lines = [title, "", "%d atoms" % n, "1 atom types", ""]
-    for (lo, hi), name in zip(box, ("x", "y", "z")):
-        lines.append("%s %s %slo %shi" % (r(float(lo)), r(float(hi)), name, name))
-    lines += ["", "Atoms # sphere", ""]
-    for i in range(n):
-        # the data file holds the diameter; 2 * r is exact in floating point
-        lines.append("%d 1 %s %s %s %s %s" % (i + 1, r(2.0 * float(radius[i])), r(float(density[i])),
-                                              r(float(x[i, 0])), r(float(x[i, 1])), r(float(x[i, 2]))))
-    lines += ["", "Velocities", ""]
-    for i in range(n):
-        lines.append("%d %s %s %s 0 0 0" % (i + 1, r(float(v[i, 0])), r(float(v[i, 1])), r(float(v[i, 2]))))
-    with open(str(path), "w") as f:
-        f.write("\n".join(lines) + "\n")
+    """hctools.write_data with radii (2 r is exact in floating point): type 1, every float
+    exact; host and dimension make a 2d file give LIGGGHTS the masses LAMMPS gives."""
+    hc.write_data(path, box, 2.0 * np.asarray(radius, dtype=float), density, x, v, title=title,
+                  host=host, dimension=dimension)
 
 
 def positions(frame):

@@ -12,31 +12,21 @@ from collections import namedtuple
 
 import numpy as np
 
+import lammps_run    # noqa: F401 - puts python/ (hctools) on sys.path
+import hctools as hc
+
 # box: (3, 2) array of lo/hi; pos, vel: (N, 3); diameter, density: (N,)
 Scene = namedtuple("Scene", "box pos vel diameter density")
 
 
 def mass(scene):
-    """Per-atom mass as read_data sets it in 3d: density x volume of the sphere."""
-    return scene.density * math.pi / 6.0 * scene.diameter ** 3
+    """Per-atom mass as read_data sets it: density x volume of the sphere."""
+    return hc.sphere_mass(scene.diameter, scene.density)
 
 
 def write_data(path, scene, comment="hardcontact test scene"):
-    """A LAMMPS data file for atom_style sphere, with Atoms and Velocities sections, full
-    double precision."""
-    n = len(scene.diameter)
-    lines = [comment, "", "%d atoms" % n, "1 atom types", ""]
-    for k, name in enumerate("xyz"):
-        lines.append("%.17g %.17g %slo %shi" % (scene.box[k, 0], scene.box[k, 1], name, name))
-    lines += ["", "Atoms # sphere", ""]
-    for i in range(n):
-        lines.append("%d 1 %.17g %.17g %.17g %.17g %.17g" % (
-            i + 1, scene.diameter[i], scene.density[i], *scene.pos[i]))
-    lines += ["", "Velocities", ""]
-    for i in range(n):
-        lines.append("%d %.17g %.17g %.17g 0 0 0" % (i + 1, *scene.vel[i]))
-    with open(str(path), "w") as f:
-        f.write("\n".join(lines) + "\n")
+    """The scene as a LAMMPS data file (hctools.write_data: every float exact)."""
+    hc.write_data(path, scene.box, scene.diameter, scene.density, scene.pos, scene.vel, title=comment)
 
 
 def jittered_lattice(counts, spacing, origin, jitter, rng):

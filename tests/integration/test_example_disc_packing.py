@@ -41,7 +41,7 @@ def test():
     print("hard: %d steps in %.1f s" % (th["Step"][-1], hard.seconds))
     lr.check(int(th["f_hc[6]"][-1]) == 0, "hard: no solve stopped at maxiter")
     lr.check(float(th["f_hc[7]"].max()) <= 1e-4, "hard: f_hc[7] <= tol (max %.3g)" % float(th["f_hc[7]"].max()))
-    worst = max(g.overlaps(c, [(1, 0.0, 1)])[1] for _, _, c in g.read_dump(hard.path("packing.dump")))
+    worst = max(g.overlaps(c, [(1, 0.0, 1)])[1] for _, c, _ in g.read_dump(hard.path("packing.dump")))
     lr.check(worst <= 1e-4 + 1e-6, "hard: dumped frames, largest overlap %.3g of the contact size" % worst)
     m = packing.measure(str(hard.workdir))
     lr.check(0.82 <= m["phi"] <= 0.86, "hard: bulk area fraction %.4f" % m["phi"])

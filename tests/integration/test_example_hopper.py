@@ -52,10 +52,10 @@ def test():
             lr.check(int(blk["f_hc[6]"][-1]) == 0 and float(blk["f_hc[7]"].max()) <= 1e-4,
                      "D = %d mm: no maxiter, f_hc[7] <= tol (max %.3g)" % (w, float(blk["f_hc[7]"].max())))
         frames = g.read_dump(res.path("silo.dump"))
-        floor0 = frames[0][2]
+        floor0 = frames[0].columns
         fx0 = {int(i): (x, y) for i, x, y, t in zip(floor0["id"], floor0["x"], floor0["y"], floor0["type"]) if t == 2}
         moved, leaked = 0.0, 0
-        for _, _, c in frames:
+        for _, c, _ in frames:
             for i, x, y, t, r in zip(c["id"], c["x"], c["y"], c["type"], c["radius"]):
                 if t == 2:
                     moved = max(moved, abs(x - fx0[int(i)][0]), abs(y - fx0[int(i)][1]))

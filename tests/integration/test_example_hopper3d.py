@@ -70,10 +70,10 @@ def check_geometry(frames, name):
     """Every bead clear of the cone by its radius (within 2 tol), below the floor only in the
     outlet; the floor spheres where they started."""
     cos = math.cos(math.atan(make_data.TAN))
-    floor0 = {int(i): (x, y, z) for i, x, y, z, t in zip(*(frames[0][2][k] for k in
+    floor0 = {int(i): (x, y, z) for i, x, y, z, t in zip(*(frames[0].columns[k] for k in
                                                             ("id", "x", "y", "z", "type"))) if t == 2}
     worst, below_out, moved = np.inf, 0.0, 0.0
-    for _, _, c in frames:
+    for _, c, _ in frames:
         b = c["type"] == 1
         x, y, z, r = c["x"][b], c["y"][b], c["z"][b], c["radius"][b]
         rho = np.hypot(x, y)

@@ -73,7 +73,7 @@ def test():
         print("%s: %.1f s" % (deck, res.seconds))
     hard, soft = runs["hard"], runs["soft"]
     print(hopper.table([("hard", hard), ("soft", soft)]))
-    for step, _, c in hard["frames"]:
+    for step, c, _ in hard["frames"]:
         lr.check(inside_hopper(c, 1e-3), "hard: at step %d every bead above the outlet is inside "
                  "the hopper" % step)
     lr.check(hard["overlap"] <= 1e-2 * 0.004, "hard: the settled bed's largest bead-bead overlap "

@@ -49,9 +49,9 @@ def test():
                  "solves at maxiter %g" % (lifters, m["overlap"], m["maxiter"]))
         lr.check(m["mix"][-1] > 0.3, "%d lifters: the halves mix (Lacey index %.2f after one "
                  "revolution)" % (lifters, m["mix"][-1]))
-        nset = m["loops"][0][2]
+        nset = m["loops"][0]["steps"]
         frames = mixer.gr.read_dump(os.path.join(args.workdir, "lifters%d" % lifters, "mixer.dump"))
-        highest[lifters] = max(float(c["z"].max()) for step, _, c in frames if step > nset)
+        highest[lifters] = max(float(c["z"].max()) for step, c, _ in frames if step > nset)
     lr.check(highest[6] > highest[0] + 1.5, "the lifters carry spheres up out of the bed (highest "
              "sphere %.2f against %.2f without lifters)" % (highest[6], highest[0]))
 

@@ -59,11 +59,11 @@ def test():
     lr.check(float(th["f_hc[7]"].max()) <= 1e-4, "hard: f_hc[7] <= tol at every thermo step (max %.3g)"
              % float(th["f_hc[7]"].max()))
     frames = g.read_dump(hard.path("pile.dump"))
-    worst = max(g.overlaps(c, WALLS)[1] for _, _, c in frames)
+    worst = max(g.overlaps(c, WALLS)[1] for _, c, _ in frames)
     lr.check(worst <= 1e-4 + 1e-6, "hard: dumped positions, largest overlap %.3g of the contact size" % worst)
     ke = th["c_ke"]
     lr.check(ke[-1] <= 1e-3 * ke.max(), "hard: settled, KE %.3g J at the end, peak %.3g J" % (ke[-1], ke.max()))
-    last = frames[-1][2]
+    last = frames[-1].columns
     top_hard = g.bed_height(last)
     lr.check(0.034 <= top_hard <= 0.038, "hard: bed height %.4g m" % top_hard)
 
@@ -91,15 +91,15 @@ def test():
     ths = soft.thermo[-1]
     print("soft: %d steps in %.1f s" % (ths["Step"][-1], soft.seconds))
     sframes = g.read_dump(soft.path("pile.dump"))
-    top_soft = g.bed_height(sframes[-1][2])
+    top_soft = g.bed_height(sframes[-1].columns)
     lr.check(abs(top_soft - top_hard) <= 0.03 * top_hard, "soft: bed height %.4g m (hard %.4g m)" % (top_soft, top_hard))
-    ov = max(g.overlaps(c, WALLS)[1] for _, _, c in sframes)
+    ov = max(g.overlaps(c, WALLS)[1] for _, c, _ in sframes)
     lr.check(1e-3 < ov < 0.05, "soft: largest overlap %.3g of the contact size" % ov)
 
     # the same stress inside the bed, hard and soft: per grain area, mean of the last 3 dumps
     def interior_stress(frames):
         xx, yy = [], []
-        for _, _, c in frames[-3:]:
+        for _, c, _ in frames[-3:]:
             h = g.bed_height(c)
             sel = (c["x"] > 0.01) & (c["x"] < 0.07) & (c["y"] > 0.2 * h) & (c["y"] < 0.8 * h)
             area = float((np.pi * c["radius"][sel] ** 2).sum())

@@ -39,11 +39,11 @@ def test():
     lr.check(int(th["f_hc[6]"][-1]) == 0, "hard: no solve stopped at maxiter")
     lr.check(float(th["f_hc[7]"].max()) <= 1e-4, "hard: f_hc[7] <= tol (max %.3g)" % float(th["f_hc[7]"].max()))
     frames = g.read_dump(hard.path("pour.dump"))
-    worst = max(g.overlaps(c, WALLS)[1] for _, _, c in frames)
+    worst = max(g.overlaps(c, WALLS)[1] for _, c, _ in frames)
     lr.check(worst <= 1e-4 + 1e-6, "hard: dumped frames, largest overlap %.3g of the contact size" % worst)
     ke = th["c_ke"]
     lr.check(ke[-1] <= 1e-4 * ke.max(), "hard: at rest, KE %.3g J at the end (peak %.3g J)" % (ke[-1], ke.max()))
-    last = frames[-1][2]
+    last = frames[-1].columns
     top = g.bed_height(last, 0.95)
     lr.check(0.005 <= top <= 0.0075, "hard: bed height %.4g m" % top)
 
@@ -52,7 +52,7 @@ def test():
     ths = soft.thermo[-1]
     print("soft: %d steps in %.1f s" % (ths["Step"][-1], soft.seconds))
     lr.check(int(ths["Atoms"][-1]) == 151, "soft: 151 atoms at the end")
-    top_soft = g.bed_height(g.read_dump(soft.path("pour.dump"))[-1][2], 0.95)
+    top_soft = g.bed_height(g.read_dump(soft.path("pour.dump"))[-1].columns, 0.95)
     lr.check(abs(top_soft - top) <= 0.002, "soft: bed height %.4g m (hard %.4g m)" % (top_soft, top))
 
 
