@@ -6,14 +6,10 @@
 # ~60 decks under mpirun again, about 2 minutes there, most of the LIGGGHTS tests' time budget.
 # The modern host's np 2 (the same adapter code as the launcher's np 2, 49 s) is soak since
 # 2026-12-06 (CI time).
-foreach(_np 1 2 4)
-  set(_hosts launcher modern liggghts)
-  if(_np EQUAL 2)
-    set(_hosts launcher)
-  endif()
-  hardcontact_deck_test(NAME errors_np${_np} SCRIPT integration/test_errors.py NP ${_np}
-                        LABELS errors TIMEOUT 600 HOSTS ${_hosts})
-endforeach()
+hardcontact_deck_test(NAME errors SCRIPT integration/test_errors.py NP 1 4
+                      LABELS errors TIMEOUT 600 HOSTS launcher modern liggghts)
+hardcontact_deck_test(NAME errors_np2 SCRIPT integration/test_errors.py NP 2
+                      LABELS errors TIMEOUT 600 HOSTS launcher)
 hardcontact_deck_test(NAME errors_soak_np2 SCRIPT integration/test_errors.py NP 2
                       LABELS errors soak TIMEOUT 600 HOSTS modern)
 
@@ -26,11 +22,5 @@ hardcontact_deck_test(NAME errors_fixed_bugs_np1 SCRIPT integration/test_errors.
 # wall/gran on the fix's atoms, an open region wall each give one WARNING naming the line; an
 # integrator on a disjoint group and the converted deck none. Serially on every host, under
 # mpirun (shared atoms counted over ranks) on the launcher
-foreach(_np 1 2 4)
-  set(_hosts launcher)
-  if(_np EQUAL 1)
-    set(_hosts launcher modern liggghts)
-  endif()
-  hardcontact_deck_test(NAME deck_checks_np${_np} SCRIPT integration/test_deck_checks.py NP ${_np}
-                        LABELS errors TIMEOUT 300 HOSTS ${_hosts})
-endforeach()
+hardcontact_deck_test(NAME deck_checks SCRIPT integration/test_deck_checks.py NP 1 2 4
+                      LABELS errors TIMEOUT 300 HOSTS launcher modern liggghts MPI_HOSTS launcher)

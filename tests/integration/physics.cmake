@@ -4,31 +4,20 @@
 # Those with HOSTS ... liggghts run through build/liggghts_hardcontact too (LIGGGHTS 3.8; all
 # but region walls, which LIGGGHTS cannot have: lammps_compat.h).
 
-foreach(_np 1 2 4)
-  # two spheres head-on in 3D: momentum-weighted normal velocity, tangential unchanged
-  hardcontact_deck_test(NAME phys_head_on_np${_np} SCRIPT integration/test_phys_head_on.py
-                        NP ${_np} LABELS physics TIMEOUT 180
-                        HOSTS launcher modern liggghts)
-  # a row of 10 touching spheres struck at one end: all leave with m v / M, exact per step
-  hardcontact_deck_test(NAME phys_chain_np${_np} SCRIPT integration/test_phys_chain.py
-                        NP ${_np} LABELS physics TIMEOUT 180
-                        HOSTS launcher modern liggghts)
-  # a sphere falling under gravity onto a wall: rests on it, weight carried by the wall
-  hardcontact_deck_test(NAME phys_wall_rest_np${_np} SCRIPT integration/test_phys_wall_rest.py
-                        NP ${_np} LABELS physics TIMEOUT 180
-                        HOSTS launcher modern liggghts)
-  # the paper's 6.3 cluster (2029 discs, h = 0.1): onto a wall, and two halves colliding;
-  # with 4 ranks on 2 cores these take 50-100 s each: soak (phys_cluster_ranks runs 4 ranks)
-  if(_np EQUAL 4)
-    set(_labels physics soak)
-  else()
-    set(_labels physics)
-  endif()
-  hardcontact_deck_test(NAME phys_cluster_wall_np${_np} SCRIPT integration/test_phys_cluster.py
-                        NP ${_np} LABELS ${_labels} ARGS --case wall TIMEOUT 900
-                        HOSTS launcher modern liggghts)
-  hardcontact_deck_test(NAME phys_cluster_free_np${_np} SCRIPT integration/test_phys_cluster.py
-                        NP ${_np} LABELS ${_labels} ARGS --case free TIMEOUT 900
+# two spheres head-on in 3D: momentum-weighted normal velocity, tangential unchanged
+hardcontact_deck_test(NAME phys_head_on SCRIPT integration/test_phys_head_on.py NP 1 2 4
+                      LABELS physics TIMEOUT 180 HOSTS launcher modern liggghts)
+# a row of 10 touching spheres struck at one end: all leave with m v / M, exact per step
+hardcontact_deck_test(NAME phys_chain SCRIPT integration/test_phys_chain.py NP 1 2 4
+                      LABELS physics TIMEOUT 180 HOSTS launcher modern liggghts)
+# a sphere falling under gravity onto a wall: rests on it, weight carried by the wall
+hardcontact_deck_test(NAME phys_wall_rest SCRIPT integration/test_phys_wall_rest.py NP 1 2 4
+                      LABELS physics TIMEOUT 180 HOSTS launcher modern liggghts)
+# the paper's 6.3 cluster (2029 discs, h = 0.1): onto a wall, and two halves colliding;
+# with 4 ranks on 2 cores these take 50-100 s each: soak (phys_cluster_ranks runs 4 ranks)
+foreach(_case wall free)
+  hardcontact_deck_test(NAME phys_cluster_${_case} SCRIPT integration/test_phys_cluster.py
+                        NP 1 2 4 SOAK_NP 4 LABELS physics ARGS --case ${_case} TIMEOUT 900
                         HOSTS launcher modern liggghts)
 endforeach()
 
@@ -63,10 +52,8 @@ foreach(_effect restitution moving_wall region_wall moving_region cohesion frict
   if(_effect MATCHES "region")
     set(_hosts launcher modern)    # LIGGGHTS 3.8 has no region walls (lammps_compat.h)
   endif()
-  foreach(_np 1 2 4)
-    hardcontact_deck_test(NAME phys_${_effect}_np${_np} SCRIPT integration/test_phys_${_effect}.py
-                          NP ${_np} LABELS physics TIMEOUT 300 HOSTS ${_hosts})
-  endforeach()
+  hardcontact_deck_test(NAME phys_${_effect} SCRIPT integration/test_phys_${_effect}.py
+                        NP 1 2 4 LABELS physics TIMEOUT 300 HOSTS ${_hosts})
 endforeach()
 
 # Triangle-mesh walls (test_phys_mesh_wall.py): a sphere rolls down a slope of triangles at
@@ -77,12 +64,10 @@ endforeach()
 # Every host serially, the launcher with 2 ranks; with 4 ranks as soak on every host (CI time: 24-29 s
 # on both cores; the meshes are searched by each sphere's owner, the same code on every host,
 # and np 4 passes on all three hosts).
-hardcontact_deck_test(NAME phys_mesh_wall_np1 SCRIPT integration/test_phys_mesh_wall.py
-                      NP 1 LABELS physics TIMEOUT 300 HOSTS launcher modern liggghts)
+hardcontact_deck_test(NAME phys_mesh_wall SCRIPT integration/test_phys_mesh_wall.py NP 1 4 SOAK_NP 4
+                      LABELS physics TIMEOUT 300 HOSTS launcher modern liggghts)
 hardcontact_deck_test(NAME phys_mesh_wall_np2 SCRIPT integration/test_phys_mesh_wall.py
                       NP 2 LABELS physics TIMEOUT 300 HOSTS launcher)
-hardcontact_deck_test(NAME phys_mesh_wall_np4 SCRIPT integration/test_phys_mesh_wall.py
-                      NP 4 LABELS physics soak TIMEOUT 300 HOSTS launcher modern liggghts)
 
 # the same friction decks solved by nsgs (block Gauss-Seidel on the true Coulomb law, no De
 # Saxce fixed point): the analytic rolling, slipping and stopping outcomes, the oblique pair,
@@ -102,16 +87,11 @@ hardcontact_deck_test(NAME phys_friction_nsgs_np4 SCRIPT integration/test_phys_f
 # compressed by a moving wall gives the virial identity of each step and the wall's force over
 # its area as the mean pressure. Every rank count on the launcher; LIGGGHTS (newton off, its
 # own compute syntax) serially and at np 2; the plugin serially
-foreach(_np 1 2 4)
-  set(_hosts launcher)
-  if(_np EQUAL 1)
-    set(_hosts launcher modern liggghts)
-  elseif(_np EQUAL 2)
-    set(_hosts launcher liggghts)
-  endif()
-  hardcontact_deck_test(NAME phys_stress_np${_np} SCRIPT integration/test_phys_stress.py
-                        NP ${_np} LABELS physics TIMEOUT 300 HOSTS ${_hosts})
-endforeach()
+hardcontact_deck_test(NAME phys_stress SCRIPT integration/test_phys_stress.py NP 1 2
+                      LABELS physics TIMEOUT 300 HOSTS launcher modern liggghts
+                      MPI_HOSTS launcher liggghts)
+hardcontact_deck_test(NAME phys_stress_np4 SCRIPT integration/test_phys_stress.py NP 4
+                      LABELS physics TIMEOUT 300 HOSTS launcher)
 
 # the neighbor rebuild look-ahead under acceleration: a falling sphere with a skin 9 x its step
 hardcontact_deck_test(NAME phys_skin_lookahead SCRIPT integration/test_phys_skin_lookahead.py
@@ -119,7 +99,5 @@ hardcontact_deck_test(NAME phys_skin_lookahead SCRIPT integration/test_phys_skin
 
 # the subspace start (subspace N) of cg and apgd: a heavy sphere at rest on a tray, with and without: same
 # height, no overlap beyond tol, at most half the iterations; ranks take the same coefficients
-foreach(_np 1 2 4)
-  hardcontact_deck_test(NAME phys_subspace_np${_np} SCRIPT integration/test_phys_subspace.py
-                        NP ${_np} LABELS physics TIMEOUT 300 HOSTS launcher modern liggghts)
-endforeach()
+hardcontact_deck_test(NAME phys_subspace SCRIPT integration/test_phys_subspace.py NP 1 2 4
+                      LABELS physics TIMEOUT 300 HOSTS launcher modern liggghts)

@@ -43,15 +43,11 @@ hardcontact_deck_test(NAME stab_crystal_2d_np2 HOSTS launcher SCRIPT integration
   LABELS stability ARGS --dim 2 --variants apgd_warm,apgd_cold,cg_warm --timeout 60 TIMEOUT 150)
 
 # radius ratio 10, mass ratio 1000: heavy spheres through a bed of light ones
-hardcontact_deck_test(NAME stab_polydisperse_np1 HOSTS launcher SCRIPT integration/test_stab_polydisperse.py NP 1
-  LABELS stability ARGS --timeout 120 TIMEOUT 300)
-hardcontact_deck_test(NAME stab_polydisperse_np2 HOSTS launcher SCRIPT integration/test_stab_polydisperse.py NP 2
+hardcontact_deck_test(NAME stab_polydisperse HOSTS launcher SCRIPT integration/test_stab_polydisperse.py NP 1 2
   LABELS stability ARGS --timeout 120 TIMEOUT 300)
 # the same on a frictional bed (mu 0.5) at the fix's default tolerance with friction (1e-2)
-foreach(_np 1 2)
-  hardcontact_deck_test(NAME stab_polydisperse_friction_np${_np} HOSTS launcher SCRIPT integration/test_stab_polydisperse.py
-    NP ${_np} LABELS stability ARGS --friction 0.5 --timeout 120 TIMEOUT 300)
-endforeach()
+hardcontact_deck_test(NAME stab_polydisperse_friction HOSTS launcher SCRIPT integration/test_stab_polydisperse.py
+  NP 1 2 LABELS stability ARGS --friction 0.5 --timeout 120 TIMEOUT 300)
 
 # deep piles: a 40-row disordered 2d pile and a 60-sphere column; in CI the default solvers
 # (cg without friction, apgd) on both, and on the column the paper's uzawa and the exact
@@ -98,9 +94,7 @@ endif()
 # (slide); Coulomb's deceleration, the exact momentum balance with the floor's forces, then at
 # rest in the floor's frame with a handful of iterations per step; 1 and 2 ranks
 foreach(_case conveyor slide)
-  foreach(_np 1 2)
-    hardcontact_deck_test(NAME stab_friction_${_case}_np${_np} HOSTS launcher
-      SCRIPT integration/test_stab_friction.py NP ${_np} LABELS stability
-      ARGS --case ${_case} --timeout 200 TIMEOUT 300)
-  endforeach()
+  hardcontact_deck_test(NAME stab_friction_${_case} HOSTS launcher
+    SCRIPT integration/test_stab_friction.py NP 1 2 LABELS stability
+    ARGS --case ${_case} --timeout 200 TIMEOUT 300)
 endforeach()
