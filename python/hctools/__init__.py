@@ -6,6 +6,7 @@
     dumps   read_dump, read_dump_local (DumpFrame: timestep, columns, box)
     data    write_data (atom_style sphere data files), write_stl, sphere_mass
     soft    hertz_params (the soft twin's gran/hertz/history settings)
+    decks   preamble (the first lines of a deck of spheres)
 
 Standard library and numpy only. A script outside python/ puts this folder on sys.path:
     sys.path.insert(0, os.path.join(<repository>, "python"))
@@ -14,6 +15,7 @@ Standard library and numpy only. A script outside python/ puts this folder on sy
 import os
 
 from .data import sphere_mass, write_data, write_stl
+from .decks import preamble
 from .dumps import DumpFrame, read_dump, read_dump_local
 from .logs import loop_times, parse_thermo, read_loop_times, read_thermo
 from .run import DEFAULT_TIMEOUT, Host, LammpsRunError, RunResult, liggghts_deck, run_deck
@@ -25,5 +27,5 @@ ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__)
 __all__ = [
     "ROOT", "DEFAULT_TIMEOUT", "Host", "LammpsRunError", "RunResult", "liggghts_deck", "run_deck",
     "parse_thermo", "read_thermo", "loop_times", "read_loop_times", "DumpFrame", "read_dump",
-    "read_dump_local", "write_data", "write_stl", "sphere_mass", "hertz_params",
+    "read_dump_local", "write_data", "write_stl", "sphere_mass", "hertz_params", "preamble",
 ]

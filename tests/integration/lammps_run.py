@@ -19,23 +19,27 @@ _REPO = Path(__file__).resolve().parents[2]
 sys.path.insert(0, str(_REPO / "python"))
 
 from hctools import (DEFAULT_TIMEOUT, DumpFrame, Host, LammpsRunError, RunResult,  # noqa: E402
-                     liggghts_deck, parse_thermo, read_dump, read_dump_local, run_deck)
+                     liggghts_deck, parse_thermo, preamble, read_dump, read_dump_local,
+                     run_deck)
 from hctools.run import WORKDIR_MARKER as _MARKER  # noqa: E402
 
 __all__ = [
     "Host", "liggghts_deck", "RunResult", "LammpsRunError", "run_deck", "parse_thermo", "read_dump", "read_dump_local",
-    "DumpFrame", "test_args", "fresh_workdir", "check", "main",
+    "DumpFrame", "preamble", "test_args", "fresh_workdir", "check", "main",
 ]
 
 
 # ----------------------------------------------------------------------------------- scripts
 
-def test_args(description=None, argv=None):
+def test_args(description=None, argv=None, extra=()):
     """Command line of a deck test, as registered by hardcontact_deck_test() in
     tests/CMakeLists.txt: --lmp <exe> --np <N> --workdir <dir> (plus --timeout, and --host
-    modern --plugin <so> for a modern LAMMPS that loads the fix as a plugin). args.lmp is a
-    Host: pass it to run_deck as it is."""
+    modern --plugin <so> for a modern LAMMPS that loads the fix as a plugin), and the test's
+    own options: extra = [(flag, argparse keywords), ...]. args.lmp is a Host: pass it to
+    run_deck as it is."""
     p = argparse.ArgumentParser(description=description)
+    for flag, keywords in extra:
+        p.add_argument(flag, **keywords)
     p.add_argument("--lmp", default=None,
                    help="LAMMPS executable: with fix hardcontact (launcher host, default "
                         "build/lmp_hardcontact) or with the PLUGIN package (modern host)")

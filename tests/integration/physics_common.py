@@ -17,34 +17,28 @@ import hctools as hc    # on sys.path through lammps_run
 DUMP_COLUMNS = "id type radius mass x y z vx vy vz f_hc[1] f_hc[2] f_hc[3] f_hc[4]"
 
 
-# The first lines of a 3D deck of spheres in a box with free (non-periodic) boundaries.
-HEADER_3D_FREE = """
-units           lj
-atom_style      sphere
-dimension       3
-boundary        f f f
-atom_modify     map array
+# The end of a deck that writes every step at full precision: thermo, the atoms (columns
+# {cols}, e.g. DUMP_COLUMNS) and the contacts (the fix's local array), then runs {n} steps.
+EVERY_STEP_OUTPUT = """thermo_modify   format float %.16g
+thermo          1
+dump            d all custom 1 dump.atoms {cols}
+dump_modify     d format float %.16g sort id
+dump            l all local 1 dump.local f_hc[1] f_hc[2] f_hc[3] f_hc[4] f_hc[5] f_hc[6] f_hc[7]
+dump_modify     l format float %.16g
+run             {n}
 """
 
+
+# The first lines of a 3D deck of spheres in a box with free (non-periodic) boundaries.
+HEADER_3D_FREE = lr.preamble()
+
 # The same over a floor: periodic in x and y, ghost velocities for friction and moving walls.
-HEADER_3D_FLOOR = """
-units           lj
-atom_style      sphere
-dimension       3
-boundary        p p f
-atom_modify     map array
-comm_modify     vel yes
-"""
+HEADER_3D_FLOOR = lr.preamble("p p f", ghost_velocities=True)
 
 
 # One sphere of diameter 1 above a floor at z = 0 (periodic in x, y) under g = 1: format with
 # x, y, z (centre), fix_extra (keywords after the wall), h, and the output and run lines.
-DROP_ON_FLOOR = """
-units           lj
-atom_style      sphere
-dimension       3
-boundary        p p f
-atom_modify     map array
+DROP_ON_FLOOR = lr.preamble("p p f") + """
 region          box block -2 2 -2 2 0 10
 create_box      1 box
 create_atoms    1 single {x} {y} {z}
@@ -111,6 +105,41 @@ def pair_overlaps(x, radius, block=512):
         if rel[k] > worst:
             worst, where = float(rel[k]), (int(idx[k[0]]), int(k[1]))
     return worst, where
+
+
+def check_conveyor(t, th, v, mu, h, floor):
+    """A sphere of radius 0.5 at rest on a floor that slides at v (g = 1, friction mu): it
+    accelerates at mu g and spins up at 5 mu g / 2r until t* = 2 v / (7 mu g), then rolls at
+    2/7 v with omega r = -5/7 v (errors <= 1e-5 away from t* +- 2h), its centre at height r
+    within 1e-6, no solve at maxiter (the floor's work through friction is allowed by the
+    energy test). th: thermo with v_vx, v_wy, v_gap, f_hc[6]; floor names the floor."""
+    r = 0.5
+    tstar = 2.0 * v / (7.0 * mu)
+    vx, wy = np.asarray(th["v_vx"]), np.asarray(th["v_wy"])
+    slide, roll = t < tstar - 2 * h, t > tstar + 2 * h
+    err_slide = max(float(np.abs(vx[slide] - mu * t[slide]).max()),
+                    float(np.abs(wy[slide] + 5.0 * mu * t[slide] / (2.0 * r)).max()))
+    err_roll = max(float(np.abs(vx[roll] - 2.0 / 7.0 * v).max()),
+                   float(np.abs(wy[roll] * r + 5.0 / 7.0 * v).max()))
+    gap = float(np.abs(np.asarray(th["v_gap"])).max())
+    lr.check(err_slide <= 1e-5 and err_roll <= 1e-5,
+             "conveyor: %s slides at V = %g; the sphere accelerates at mu g and spins up at "
+             "5 mu g / 2r until t* = 2 V / (7 mu g) = %.4g, then rolls at 2/7 V = %.6g with "
+             "omega r = -5/7 V (errors %.3g sliding, %.3g rolling)"
+             % (floor, v, tstar, 2.0 / 7.0 * v, err_slide, err_roll))
+    lr.check(gap <= 1e-6, "conveyor: centre at height r within 1e-6 (largest %.3g)" % gap)
+    maxiter = float(np.asarray(th["f_hc[6]"]).max())
+    lr.check(maxiter == 0, "conveyor: no solve stopped at maxiter: %g" % maxiter)
+
+
+def check_lift(th, vz, floor):
+    """A sphere on a floor rising at vz: carried at z_floor + r (|gap| <= 1e-6) at vz (within
+    1e-6 after the first two steps). th: thermo with v_gap, v_vz."""
+    gap = float(np.abs(np.asarray(th["v_gap"])).max())
+    err = float(np.abs(np.asarray(th["v_vz"])[2:] - vz).max())
+    lr.check(gap <= 1e-6 and err <= 1e-6,
+             "lift: %s rising at %g carries the sphere at z_floor + r (largest |gap| %.3g) and "
+             "vz = %g (largest error %.3g)" % (floor, vz, gap, vz, err))
 
 
 def thermo_block(res, columns):

@@ -104,34 +104,15 @@ def run(args, text, workdir, data_path, np_=None, timeout=None):
 
 # ----------------------------------------------------------------------------------- frames
 
-def positions(fr):
-    c = fr.columns
-    return np.column_stack([c["x"], c["y"], c["z"]])
-
-
-def velocities(fr):
-    c = fr.columns
-    return np.column_stack([c["vx"], c["vy"], c["vz"]])
+# positions, velocities and the brute-force pair overlap are the physics tests' own
+positions = pc.positions
+velocities = pc.velocities
 
 
 def pair_overlap(x, radius, block=256):
     """Largest overlap over ALL pairs relative to r_i + r_j (0 if none) and the pair (0-based):
     brute force, independent of the fix's neighbour list and candidates."""
-    x = np.asarray(x, dtype=float)
-    radius = np.asarray(radius, dtype=float)
-    n = len(x)
-    worst, where = 0.0, None
-    for a in range(0, n, block):
-        xa = x[a:a + block]
-        d = np.sqrt(((xa[:, None, :] - x[None, :, :]) ** 2).sum(axis=2))
-        size = radius[a:a + block, None] + radius[None, :]
-        rel = (size - d) / size
-        idx = np.arange(a, min(a + block, n))
-        rel[idx - a, idx] = -np.inf
-        k = np.unravel_index(np.argmax(rel), rel.shape)
-        if rel[k] > worst:
-            worst, where = float(rel[k]), (int(idx[k[0]]), int(k[1]))
-    return worst, where
+    return pc.pair_overlaps(x, radius, block)
 
 
 def wall_overlap(x, radius, walls):
@@ -148,6 +129,21 @@ def all_finite(fr):
 
 
 # ----------------------------------------------------------------------------------- checks
+
+def dump_overlaps(frames, n, walls, chk, label):
+    """Checks that every dumped frame holds n atoms, all finite, and returns the largest
+    all-pairs overlap and wall overlap over the frames, each relative to the contact size
+    (brute force: independent of the fix's neighbour list)."""
+    worst_pair = worst_wall = 0.0
+    for fr in frames:
+        chk(all_finite(fr) and len(fr.columns["id"]) == n,
+            "%s: step %d: %d atoms, all finite" % (label, fr.timestep, n))
+        xs = positions(fr)
+        worst_pair = max(worst_pair, pair_overlap(xs, fr.columns["radius"])[0])
+        if walls:
+            worst_wall = max(worst_wall, wall_overlap(xs, fr.columns["radius"], walls))
+    return worst_pair, worst_wall
+
 
 def momentum_drift(th):
     """max over steps of |P(t) - P(0)| / max_t sum m |v|: relative momentum error."""

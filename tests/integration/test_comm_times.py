@@ -22,12 +22,7 @@ import physics_common as pc
 STEPS = (60, 40)
 R = 0.5
 
-DECK = """
-units           lj
-atom_style      sphere
-dimension       3
-boundary        f f f
-atom_modify     map array
+DECK = lr.preamble() + """
 processors      * * 1
 read_data       data.spheres
 pair_style      none

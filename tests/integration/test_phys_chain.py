@@ -30,12 +30,7 @@ H = 0.1
 N = 10
 NSTEPS = 30
 
-DECK = """
-units           lj
-atom_style      sphere
-dimension       3
-boundary        f f f
-atom_modify     map array
+DECK = lr.preamble() + """
 read_data       data.chain
 pair_style      none
 neighbor        1.0 bin

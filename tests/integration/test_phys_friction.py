@@ -209,13 +209,7 @@ def launched(args):
     check_height("launch", th)
 
 
-DISC = """
-units           lj
-atom_style      sphere
-dimension       2
-boundary        p f p
-atom_modify     map array
-comm_modify     vel yes
+DISC = lr.preamble("p f p", dimension=2, ghost_velocities=True) + """
 region          box block -30 30 0 6 -0.5 0.5
 create_box      1 box
 create_atoms    1 single -20 0.5 0

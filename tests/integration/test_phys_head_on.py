@@ -34,26 +34,14 @@ T = np.array([0.2, -0.1, 0.0])                # common tangential velocity (T . 
 DIST0 = 3.0                                   # initial distance between centres
 NSTEPS = 30
 
-DECK = """
-units           lj
-atom_style      sphere
-dimension       3
-boundary        f f f
-atom_modify     map array
+DECK = lr.preamble() + """
 read_data       data.two
 pair_style      none
 neighbor        1.0 bin
 fix             hc all hardcontact tol {tol}
 timestep        {h}
 thermo_style    custom step atoms f_hc[1] f_hc[2] f_hc[3] f_hc[4] f_hc[5] f_hc[7] f_hc[9]
-thermo_modify   format float %.16g
-thermo          1
-dump            d all custom 1 dump.atoms {cols}
-dump_modify     d format float %.16g sort id
-dump            l all local 1 dump.local f_hc[1] f_hc[2] f_hc[3] f_hc[4] f_hc[5] f_hc[6] f_hc[7]
-dump_modify     l format float %.16g
-run             {n}
-"""
+""" + pc.EVERY_STEP_OUTPUT
 
 # name, radii, densities, normal speeds a1, a2 (along E)
 CASES = [

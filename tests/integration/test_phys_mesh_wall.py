@@ -44,6 +44,8 @@ import sys
 import numpy as np
 
 import lammps_run as lr
+import physics_common as pc
+import test_phys_moving_region as mr
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..",
                                 "examples", "common"))
@@ -94,13 +96,7 @@ def grid(origin, du, dv, nu, nv):
     return [[tuple(float(c) for c in v) for v in t] for t in tris]
 
 
-INCLINE = """
-units           lj
-atom_style      sphere
-dimension       3
-boundary        f f f
-atom_modify     map array
-comm_modify     vel yes
+INCLINE = lr.preamble(ghost_velocities=True) + """
 region          box block -2 14 -2 2 -6 3
 create_box      1 box
 create_atoms    1 single {x0} 0 {z0} units box
@@ -161,13 +157,7 @@ def incline_test(args):
     lr.check(float(np.asarray(m["f_hc[6]"]).max()) == 0, "incline: no solve at maxiter")
 
 
-FLOOR = """
-units           lj
-atom_style      sphere
-dimension       3
-boundary        f f f
-atom_modify     map array
-comm_modify     vel yes
+FLOOR = lr.preamble(ghost_velocities=True) + """
 region          box block -1 22 -1 12 -1 3
 create_box      1 box
 create_atoms    1 single 0.37 0.37 0.5 units box
@@ -210,13 +200,7 @@ def floor_test(args):
              "(largest error %.3g)" % errs[2])
 
 
-BOX = """
-units           lj
-atom_style      sphere
-dimension       3
-boundary        f f f
-atom_modify     map array
-comm_modify     vel yes
+BOX = lr.preamble(ghost_velocities=True) + """
 region          box block -1 3 -1 3 -1 3
 create_box      1 box
 lattice         sc 4.6296296296 origin 0.5 0.5 0.5    # spacing 0.6
@@ -288,35 +272,10 @@ def box_test(args):
     lr.check(overlap <= tol, "box: largest overlap %.3g <= tol %g after every step" % (overlap, tol))
 
 
-CONVEYOR = """
-units           lj
-atom_style      sphere
-dimension       3
-boundary        p p f
-atom_modify     map array
-comm_modify     vel yes
-region          box block -30 30 -2 2 -1 40
-create_box      1 box
-create_atoms    1 single -2 0 0.5
-set             atom 1 diameter 1.0 density 1.0
-pair_style      none
-neighbor        0.5 bin
-variable        xf equal {vx}*time
-variable        zf equal {vz}*time
-fix             hc all hardcontact tol 1e-4 {friction} wall stl floor.stl move v_xf NULL v_zf
-fix             g all gravity 1.0 vector 0 0 -1
-timestep        {h}
-compute         om all property/atom omegay
-compute         wy all reduce sum c_om
-variable        wy equal c_wy    # one atom: the sum is its spin
-variable        vx equal vx[1]
-variable        vz equal vz[1]
-variable        gap equal z[1]-0.5-v_zf
-thermo_style    custom step v_vx v_vz v_wy v_gap f_hc[6] f_hc[7]
-thermo_modify   format float %.15g
-thermo          1
-run             {n}
-"""
+# the conveyor and the lift of test_phys_moving_region.py, their floor a sliding mesh
+CONVEYOR = mr.CONVEYOR.replace(
+    "region          floor plane 0 0 0 0 0 1 side in move v_xf NULL v_zf\n", "").replace(
+    "wall region floor", "wall stl floor.stl move v_xf NULL v_zf")
 
 
 def conveyor(args, name, vx, vz, friction, n):
@@ -324,63 +283,22 @@ def conveyor(args, name, vx, vz, friction, n):
     # a floor larger than the box (periodic in x, y): every image of the sphere is over it
     write_ascii_stl("%s/floor.stl" % wd, [((-60, -6, 0), (60, -6, 0), (60, 6, 0)),
                                          ((-60, -6, 0), (60, 6, 0), (-60, 6, 0))])
-    deck = CONVEYOR.format(vx=vx, vz=vz, friction=friction, h=H, n=n)
+    deck = CONVEYOR.format(vx=vx, vz=vz, friction=friction, h=H) + "run %d\n" % n
     th = lr.run_deck(args.lmp, deck, args.np, wd, timeout=args.timeout).thermo[-1]
     return np.asarray(th["Step"], dtype=float) * H, th
 
 
 def moving_floor_test(args):
-    V, MU, r = 2.0, 0.3, 0.5
-    t, th = conveyor(args, "conveyor", V, 0.0, "friction %g" % MU, 300)
-    tstar = 2.0 * V / (7.0 * MU)
-    vx, wy = np.asarray(th["v_vx"]), np.asarray(th["v_wy"])
-    slide, roll = t < tstar - 2 * H, t > tstar + 2 * H
-    err_slide = max(float(np.abs(vx[slide] - MU * t[slide]).max()),
-                    float(np.abs(wy[slide] + 5.0 * MU * t[slide] / (2.0 * r)).max()))
-    err_roll = max(float(np.abs(vx[roll] - 2.0 / 7.0 * V).max()),
-                   float(np.abs(wy[roll] * r + 5.0 / 7.0 * V).max()))
-    gap = float(np.abs(np.asarray(th["v_gap"])).max())
-    lr.check(err_slide <= 1e-5 and err_roll <= 1e-5,
-             "conveyor: a mesh floor sliding at V = %g accelerates the sphere at mu g and spins "
-             "it up until t* = %.4g, then it rolls at 2/7 V with omega r = -5/7 V (errors %.3g "
-             "sliding, %.3g rolling)" % (V, tstar, err_slide, err_roll))
-    lr.check(gap <= 1e-6, "conveyor: centre at height r within 1e-6 (largest %.3g)" % gap)
-    lr.check(float(np.asarray(th["f_hc[6]"]).max()) == 0, "conveyor: no solve at maxiter")
-    t, th = conveyor(args, "lift", 0.0, 0.5, "", 200)
-    gap = float(np.abs(np.asarray(th["v_gap"])).max())
-    verr = float(np.abs(np.asarray(th["v_vz"])[2:] - 0.5).max())
-    lr.check(gap <= 1e-6 and verr <= 1e-6,
-             "lift: a mesh floor rising at 0.5 carries the sphere at z_floor + r (largest |gap| "
-             "%.3g) and vz = 0.5 (largest error %.3g)" % (gap, verr))
+    t, th = conveyor(args, "conveyor", 2.0, 0.0, "friction 0.3", 300)
+    pc.check_conveyor(t, th, 2.0, 0.3, H, "a mesh floor")
+    _, th = conveyor(args, "lift", 0.0, 0.5, "", 200)
+    pc.check_lift(th, 0.5, "a mesh floor")
 
 
-DRUM = """
-units           lj
-atom_style      sphere
-dimension       3
-boundary        f p f
-atom_modify     map array
-comm_modify     vel yes
-region          box block -6 6 0 4.8 -6 6
-create_box      1 box
-region          fill cylinder y 0 0 4.45 -100 100 side in units box
-lattice         sc 0.5787037    # spacing 1.2: 4 layers across the periodic length 4.8
-create_atoms    1 region fill
-set             type 1 diameter 1.0 density 1.0
-variable        theta equal {omega}*time
-pair_style      none
-neighbor        0.5 bin
-fix             hc all hardcontact tol {tol} friction 0.5 wall stl drum.stl rotate v_theta 0 0 0 0 1 0
-fix             g all gravity 1.0 vector 0 0 -1
-timestep        {h}
-variable        xc equal xcm(all,x)
-variable        rad atom sqrt(x*x+z*z)
-compute         rmax all reduce max v_rad
-thermo_style    custom step atoms v_xc c_rmax f_hc[6] f_hc[7]
-thermo_modify   format float %.15g
-thermo          10
-run             {n}
-"""
+# the drum of test_phys_moving_region.py, its wall the facets of drum.stl rotating with it
+DRUM = mr.DRUM.replace(
+    "region          drum cylinder y 0 0 5 -100 100 side in open 1 open 2 rotate v_theta 0 0 0 0 1 "
+    "0 units box\n", "").replace("wall region drum", "wall stl drum.stl rotate v_theta 0 0 0 0 1 0")
 
 
 def drum_test(args):
@@ -408,13 +326,7 @@ def drum_test(args):
              "step; solves at maxiter: %g" % (overlap, tol, maxiter))
 
 
-CONE = """
-units           lj
-atom_style      sphere
-dimension       3
-boundary        f f f
-atom_modify     map array
-comm_modify     vel yes
+CONE = lr.preamble(ghost_velocities=True) + """
 region          box block -4 4 -4 4 -1 5
 create_box      1 box
 create_atoms    1 single 0.3 0.1 2.0 units box
@@ -475,8 +387,7 @@ def restart_test(args):
     V, MU = 2.0, 0.3
     wd = lr.fresh_workdir("%s/restart" % args.workdir)
     write_ascii_stl("%s/floor.stl" % wd, grid([-20, -1.9, 0], [1, 0, 0], [0, 0.95, 0], 40, 4))
-    head = CONVEYOR.format(vx=V, vz=0.0, friction="friction %g" % MU, h=H, n=0)
-    head = head[:head.index("run ")]
+    head = CONVEYOR.format(vx=V, vz=0.0, friction="friction %g" % MU, h=H)
     straight = head + "run 250\n"
     first = head + "run 100\nwrite_restart floor.restart\n"
     keep = ("variable", "pair_style", "neighbor", "fix", "timestep", "compute", "thermo")
@@ -515,12 +426,12 @@ def liggghts_mesh_fix_test(args):
     lr.check(diff == 0.0, "LIGGGHTS wall mesh: the slope read through fix mesh/surface rolls the "
              "sphere as wall stl on the same file, to the bit (largest difference %.3g)" % diff)
     # the conveyor: fix move/mesh linear in place of move v_xf
-    V, MU, r = 2.0, 0.3, 0.5
+    V, MU = 2.0, 0.3
     wd = lr.fresh_workdir("%s/lig_conveyor" % args.workdir)
     # LIGGGHTS keeps a moving mesh inside the box: this floor goes from x = -20..20 to -14..26
     # (and bins its triangles by their size within the box: cells of 1 x 0.95)
     write_ascii_stl("%s/floor.stl" % wd, grid([-20, -1.9, 0], [1, 0, 0], [0, 0.95, 0], 40, 4))
-    deck = CONVEYOR.format(vx=V, vz=0.0, friction="friction %g" % MU, h=H, n=300).replace(
+    deck = (CONVEYOR.format(vx=V, vz=0.0, friction="friction %g" % MU, h=H) + "run 300\n").replace(
         "fix             hc all hardcontact tol 1e-4 friction 0.3 wall stl floor.stl move v_xf "
         "NULL v_zf",
         "fix             cad all mesh/surface file floor.stl type 1\n"
@@ -528,39 +439,23 @@ def liggghts_mesh_fix_test(args):
         "fix             hc all hardcontact tol 1e-4 friction 0.3 wall mesh cad" % V)
     th = lr.run_deck(args.lmp, deck, args.np, wd, timeout=args.timeout).thermo[-1]
     t = np.asarray(th["Step"], dtype=float) * H
-    tstar = 2.0 * V / (7.0 * MU)
-    vx, wy = np.asarray(th["v_vx"]), np.asarray(th["v_wy"])
-    slide, roll = t < tstar - 2 * H, t > tstar + 2 * H
-    err = max(float(np.abs(vx[slide] - MU * t[slide]).max()),
-              float(np.abs(wy[slide] + 5.0 * MU * t[slide] / (2.0 * r)).max()),
-              float(np.abs(vx[roll] - 2.0 / 7.0 * V).max()),
-              float(np.abs(wy[roll] * r + 5.0 / 7.0 * V).max()))
-    lr.check(err <= 1e-5, "LIGGGHTS wall mesh: a floor moved by fix move/mesh linear %g is the "
-             "conveyor (slides at mu g, rolls at 2/7 V from t* = %.4g; largest error %.3g)"
-             % (V, tstar, err))
+    pc.check_conveyor(t, th, V, MU, H, "a LIGGGHTS mesh floor moved by fix move/mesh linear")
     # the same conveyor as a belt: the floor stays, its surface moves (surface_vel)
     wd = lr.fresh_workdir("%s/lig_belt" % args.workdir)
     write_ascii_stl("%s/floor.stl" % wd, grid([-20, -1.9, 0], [1, 0, 0], [0, 0.95, 0], 40, 4))
-    deck = CONVEYOR.format(vx=0.0, vz=0.0, friction="friction %g" % MU, h=H, n=300).replace(
+    deck = (CONVEYOR.format(vx=0.0, vz=0.0, friction="friction %g" % MU, h=H) + "run 300\n").replace(
         "fix             hc all hardcontact tol 1e-4 friction 0.3 wall stl floor.stl move v_xf "
         "NULL v_zf",
         "fix             cad all mesh/surface file floor.stl type 1 surface_vel %g 0 0\n"
         "fix             hc all hardcontact tol 1e-4 friction 0.3 wall mesh cad" % V)
     th = lr.run_deck(args.lmp, deck, args.np, wd, timeout=args.timeout).thermo[-1]
-    vx, wy = np.asarray(th["v_vx"]), np.asarray(th["v_wy"])
-    err = max(float(np.abs(vx[slide] - MU * t[slide]).max()),
-              float(np.abs(wy[slide] + 5.0 * MU * t[slide] / (2.0 * r)).max()),
-              float(np.abs(vx[roll] - 2.0 / 7.0 * V).max()),
-              float(np.abs(wy[roll] * r + 5.0 / 7.0 * V).max()))
-    gap = float(np.abs(np.asarray(th["v_gap"])).max())
-    lr.check(err <= 1e-5 and gap <= 1e-6, "LIGGGHTS wall mesh: a belt (fix mesh/surface ... "
-             "surface_vel %g 0 0, the mesh at rest) is the same conveyor (largest error %.3g, "
-             "centre at r within %.3g)" % (V, err, gap))
+    pc.check_conveyor(t, th, V, MU, H, "a LIGGGHTS belt (fix mesh/surface ... surface_vel, the "
+                      "mesh at rest)")
     # a turntable (surface_ang_vel): the sphere at rest 2 from the axis, the surface under it
     # moving at omega 2 along +y, is pushed along +y at mu g while it slides
     wd = lr.fresh_workdir("%s/lig_turntable" % args.workdir)
     write_ascii_stl("%s/floor.stl" % wd, grid([-20, -1.9, 0], [1, 0, 0], [0, 0.95, 0], 40, 4))
-    deck = CONVEYOR.format(vx=0.0, vz=0.0, friction="friction %g" % MU, h=H, n=40).replace(
+    deck = (CONVEYOR.format(vx=0.0, vz=0.0, friction="friction %g" % MU, h=H) + "run 40\n").replace(
         "fix             hc all hardcontact tol 1e-4 friction 0.3 wall stl floor.stl move v_xf "
         "NULL v_zf",
         "fix             cad all mesh/surface file floor.stl type 1 surface_ang_vel origin -4 0 0 "

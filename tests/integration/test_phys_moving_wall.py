@@ -39,12 +39,7 @@ thermo_style    custom step v_zf v_gap v_vz f_hc[1]
 thermo_modify   format float %.15g
 thermo          1"""
 
-PISTON = """
-units           lj
-atom_style      sphere
-dimension       3
-boundary        p p f
-atom_modify     map array
+PISTON = lr.preamble("p p f") + """
 region          box block -2 2 -2 2 0 10
 create_box      1 box
 create_atoms    1 single 0.0 0.0 0.5

@@ -20,12 +20,7 @@ import math
 
 import lammps_run as lr
 
-BASE = """
-units           lj
-atom_style      sphere
-dimension       3
-boundary        f f f
-atom_modify     map array
+BASE = lr.preamble() + """
 region          box block -5 5 -5 5 -1 12
 create_box      1 box
 {region}

@@ -37,13 +37,7 @@ import physics_common as pc
 
 G = 1.0
 
-COLUMN = """
-units           lj
-atom_style      sphere
-dimension       3
-boundary        p p f
-atom_modify     map array
-comm_modify     vel yes
+COLUMN = lr.preamble("p p f", ghost_velocities=True) + """
 read_data       data.column
 pair_style      none
 neighbor        0.3 bin
@@ -100,13 +94,7 @@ def test_column(args):
     lr.check(off == 0.0, "column: fix_modify hc virial no: pressure and stress/atom 0 (%.3g)" % off)
 
 
-BOX = """
-units           lj
-atom_style      sphere
-dimension       3
-boundary        f f f
-atom_modify     map array
-comm_modify     vel yes
+BOX = lr.preamble(ghost_velocities=True) + """
 read_data       data.box
 pair_style      none
 neighbor        0.4 bin

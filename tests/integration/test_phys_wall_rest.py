@@ -31,12 +31,7 @@ DENSITY = 2.0
 Z0 = 3.0
 NSTEPS = 400
 
-DECK = """
-units           lj
-atom_style      sphere
-dimension       3
-boundary        {boundary}
-atom_modify     map array
+DECK = lr.preamble("{boundary}") + """
 read_data       data.one
 pair_style      none
 neighbor        {skin} bin
@@ -44,14 +39,7 @@ fix             grav all gravity {g} vector 0 0 -1
 fix             hc all hardcontact {keywords}
 timestep        {h}
 thermo_style    custom step atoms f_hc[1] f_hc[2] f_hc[3] f_hc[4] f_hc[5] f_hc[7]
-thermo_modify   format float %.16g
-thermo          1
-dump            d all custom 1 dump.atoms {cols}
-dump_modify     d format float %.16g sort id
-dump            l all local 1 dump.local f_hc[1] f_hc[2] f_hc[3] f_hc[4] f_hc[5] f_hc[6] f_hc[7]
-dump_modify     l format float %.16g
-run             {n}
-"""
+""" + pc.EVERY_STEP_OUTPUT
 
 
 def local_rows(columns):

@@ -25,13 +25,7 @@ import physics_common as pc
 
 TOL = 1e-10
 
-BOX_DECK = """
-units           lj
-atom_style      sphere
-dimension       3
-boundary        f f f
-atom_modify     map array
-comm_modify     vel yes
+BOX_DECK = lr.preamble(ghost_velocities=True) + """
 read_data       data.box
 {pair}
 neighbor        0.3 bin

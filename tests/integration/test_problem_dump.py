@@ -27,12 +27,7 @@ TOL = 1e-10
 STEPS = 12
 R = 0.5
 
-DECK = """
-units           lj
-atom_style      sphere
-dimension       3
-boundary        f f f
-atom_modify     map array
+DECK = lr.preamble() + """
 read_data       data.spheres
 pair_style      none
 neighbor        0.5 bin

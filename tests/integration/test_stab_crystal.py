@@ -39,8 +39,6 @@ the result, and MEASURED reports how many solves did (kept_undone, f_hc[12]).
 On 2 ranks (np 2 registration): the same checks, and the final positions compared with a serial
 apgd_cold run of the same data file (within L tol d)."""
 
-import math
-import sys
 from pathlib import Path
 
 import numpy as np
@@ -102,20 +100,11 @@ def column_weight_bound(x, mass, dim, rows):
 
 
 def test():
-    argv = list(sys.argv[1:])
-    dim, nsteps, variants = 2, 1000, list(VARIANTS)
-    for opt in ("--dim", "--steps", "--variants"):
-        if opt in argv:
-            k = argv.index(opt)
-            val = argv[k + 1]
-            del argv[k:k + 2]
-            if opt == "--dim":
-                dim = int(val)
-            elif opt == "--steps":
-                nsteps = int(val)
-            else:
-                variants = val.split(",")
-    args = lr.test_args(__doc__, argv)
+    args = lr.test_args(__doc__, extra=[
+        ("--dim", dict(type=int, default=2, choices=(2, 3))),
+        ("--steps", dict(type=int, default=1000, help="steps at rest after settling")),
+        ("--variants", dict(default=",".join(VARIANTS), help="comma-separated, of %s" % ",".join(VARIANTS)))])
+    dim, nsteps, variants = args.dim, args.steps, args.variants.split(",")
     x0, ideal, box, walls, layers, boundary = geometry(dim)
     natoms = len(x0)
     data = Path(args.workdir) / "data.crystal"

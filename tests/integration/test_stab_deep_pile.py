@@ -32,7 +32,6 @@ A = h^2 G M^-1 G^T; for a chain standing on a floor A^-1 = (m / h^2) min(k, l), 
 are at most L^2 / 2: force errors up to L^2 tol m g / 2 (0.18 m g here, 3e-3 of the bottom
 contact's load)."""
 
-import sys
 from pathlib import Path
 
 import numpy as np
@@ -70,20 +69,11 @@ def scene(case):
 
 
 def test():
-    argv = list(sys.argv[1:])
-    case, solver, nsteps = "pile2d", "apgd", 1000
-    for opt in ("--case", "--solver", "--steps"):
-        if opt in argv:
-            k = argv.index(opt)
-            val = argv[k + 1]
-            del argv[k:k + 2]
-            if opt == "--case":
-                case = val
-            elif opt == "--solver":
-                solver = val
-            else:
-                nsteps = int(val)
-    args = lr.test_args(__doc__, argv)
+    args = lr.test_args(__doc__, extra=[
+        ("--case", dict(default="pile2d", choices=("pile2d", "column"))),
+        ("--solver", dict(default="apgd")),
+        ("--steps", dict(type=int, default=1000, help="steps at rest after settling"))])
+    case, solver, nsteps = args.case, args.solver, args.steps
     x0, radius, box, walls, wall_list, dim, boundary, h, layers = scene(case)
     n = len(x0)
     nsettle = NSETTLE[case]

@@ -74,13 +74,7 @@ def test():
         "work %.3g), %d steps with an excess above %g KE(0)"
         % (label, rise, int(th["Step"][k]), ke[k - 1], ke[k], work[k], nrise, KE_ROUNDOFF))
     frames = lr.read_dump(res.path("dump.atoms"))
-    worst_pair = worst_wall = 0.0
-    for fr in frames:
-        chk(sc.all_finite(fr) and len(fr.columns["id"]) == N,
-            "%s: step %d: %d atoms, all finite" % (label, fr.timestep, N))
-        xs = sc.positions(fr)
-        worst_pair = max(worst_pair, sc.pair_overlap(xs, fr.columns["radius"])[0])
-        worst_wall = max(worst_wall, sc.wall_overlap(xs, fr.columns["radius"], wl))
+    worst_pair, worst_wall = sc.dump_overlaps(frames, N, wl, chk, label)
     chk(worst_pair <= TOL * (1 + 1e-9) and worst_wall <= TOL * (1 + 1e-9),
         "%s: dumps: all-pairs overlap %.3g, wall overlap %.3g <= tol" % (label, worst_pair, worst_wall))
     sc.report("long_run_np%d_%d" % (args.np, nsteps), steps=nsteps, overlap=ov, ke_excess=rise,

@@ -108,13 +108,7 @@ def test():
     chk(excess <= E_TOL, "%s: KE + PE never above its initial value (KE(t) <= KE(0) + work of "
         "gravity): largest excess %.3g of the energy scale %.4g <= %g" % (label, excess, scale, E_TOL))
     rise = sc.energy_rises(e, scale)    # measured, reported (asserted by the step sweep)
-    worst_pair = worst_wall = 0.0
-    for fr in frames:
-        chk(sc.all_finite(fr) and len(fr.columns["id"]) == n,
-            "%s: step %d: %d atoms, all finite" % (label, fr.timestep, n))
-        xs = sc.positions(fr)
-        worst_pair = max(worst_pair, sc.pair_overlap(xs, fr.columns["radius"])[0])
-        worst_wall = max(worst_wall, sc.wall_overlap(xs, fr.columns["radius"], wall_list))
+    worst_pair, worst_wall = sc.dump_overlaps(frames, n, wall_list, chk, label)
     chk(worst_pair <= TOL * (1 + 1e-9), "%s: all-pairs overlap from %d dumps %.3g <= tol"
         % (label, len(frames), worst_pair))
     chk(worst_wall <= TOL * (1 + 1e-9), "%s: wall overlap from dumps %.3g <= tol" % (label, worst_wall))

@@ -134,15 +134,7 @@ def test():
                  % (label, dims, drift, P_ROUNDOFF))
 
         frames = lr.read_dump(res.path("dump.atoms"))
-        worst_pair = worst_wall = 0.0
-        for fr in frames:
-            chk(sc.all_finite(fr) and len(fr.columns["id"]) == N,
-                     "%s: step %d: %d atoms, all finite" % (label, fr.timestep, N))
-            xs = sc.positions(fr)
-            ovp, where = sc.pair_overlap(xs, fr.columns["radius"])
-            worst_pair = max(worst_pair, ovp)
-            if walls:
-                worst_wall = max(worst_wall, sc.wall_overlap(xs, fr.columns["radius"], walls))
+        worst_pair, worst_wall = sc.dump_overlaps(frames, N, walls, chk, label)
         chk(worst_pair <= tol * (1 + 1e-9),
                  "%s: all-pairs overlap from %d dumps %.3g <= tol" % (label, len(frames), worst_pair))
         if walls:
