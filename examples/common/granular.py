@@ -11,7 +11,6 @@ Masses: LAMMPS gives an atom_style sphere atom of diameter d and density rho the
 pi/6 d^3 rho, in 2d too (read_data and `set density`); every deck here relies on that.
 """
 
-import math
 import os
 import sys
 
