@@ -1,6 +1,7 @@
 // Random sphere packings in a box for the property tests: fixed seeds, radii in [0.5, 1],
 // masses log-uniform in [1, 1000], random u_free in [-1, 1]^3, and one row per pair (and per
-// sphere-wall couple) that could meet within the step (Remark 7).
+// sphere-wall couple) that could meet within the step (Remark 7). The micro-benchmarks
+// (bench/micro/) build their problems with it too.
 #pragma once
 
 #include "core_test_util.h"
@@ -25,6 +26,20 @@ struct RandomConfigOptions {
   double h = 0.2;
   double mass_decades = 3.0;    // masses 10^[0, mass_decades]
 };
+
+// Spheres of the problem get I = 2/5 m r^2, spin w_free, and every row the coefficient mu
+// (the rows' frames completed: call it after the rows are made).
+inline void add_friction(ContactProblem &p, const std::vector<double> &r, double mu,
+                         const std::vector<Vec3> &w_free = {})
+{
+  const int n = p.n_bodies();
+  p.radius = r;
+  p.inv_inertia.resize(n);
+  for (int b = 0; b < n; ++b) p.inv_inertia[b] = p.inv_mass[b] / (0.4 * r[b] * r[b]);
+  p.w_free = w_free.empty() ? std::vector<Vec3>(n, Vec3::Zero()) : w_free;
+  p.friction.assign(p.n_contacts(), mu);
+  p.complete_frames(0);
+}
 
 inline RandomConfig random_config(unsigned seed, const RandomConfigOptions &o)
 {

@@ -25,18 +25,7 @@ using hardcontact::SerialOps;
 using hardcontact::SolverSettings;
 using hardcontact::Vec3;
 
-// Spheres of the problem get I = 2/5 m r^2, spin w_free, and every row the coefficient mu.
-void add_friction(ContactProblem &p, const std::vector<double> &r, double mu,
-                  const std::vector<Vec3> &w_free = {})
-{
-  const int n = p.n_bodies();
-  p.radius = r;
-  p.inv_inertia.resize(n);
-  for (int b = 0; b < n; ++b) p.inv_inertia[b] = p.inv_mass[b] / (0.4 * r[b] * r[b]);
-  p.w_free = w_free.empty() ? std::vector<Vec3>(n, Vec3::Zero()) : w_free;
-  p.friction.assign(p.n_contacts(), mu);
-  p.complete_frames(0);
-}
+using hctest::add_friction;
 
 struct Solved {
   std::vector<double> mu;
