@@ -19,7 +19,8 @@ CACHE_DIR="${HARDCONTACT_CACHE_DIR:-$ROOT/.cache}"
 # liggghts + libliggghts-dev: LIGGGHTS 3.8 with its full headers, for build/liggghts_hardcontact
 # (the LIGGGHTS host; CMake builds it when it finds them)
 PACKAGES=(lammps liblammps-dev libeigen3-dev libopenmpi-dev openmpi-bin libgtest-dev cmake g++
-          make python3 python3-numpy python3-matplotlib dpkg-dev xz-utils liggghts libliggghts-dev)
+          make python3 python3-numpy python3-matplotlib dpkg-dev xz-utils liggghts libliggghts-dev
+          libbenchmark-dev)
 SRC_LIST=/etc/apt/sources.list.d/debian-src.sources
 export DEBIAN_FRONTEND=noninteractive
 
