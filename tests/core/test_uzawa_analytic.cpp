@@ -32,6 +32,20 @@ SolveReport run_uzawa(const ContactProblem &p, std::vector<double> &mu, std::vec
   return solver.solve(p, s, ops, mu, u);
 }
 
+// A pair that does not meet within the step, started from the multiplier mu0: the answer is the
+// free motion exactly and the multiplier 0 (the force cannot pull).
+SolveReport expect_free_motion_from(const ContactProblem &p, double mu0)
+{
+  std::vector<double> mu{mu0};
+  std::vector<Vec3> u;
+  const SolveReport r = run_uzawa(p, mu, u);
+  EXPECT_TRUE(r.converged);
+  EXPECT_EQ(mu[0], 0.0);
+  EXPECT_EQ(u[0], p.u_free[0]);
+  EXPECT_EQ(u[1], p.u_free[1]);
+  return r;
+}
+
 Vec3 tangential(const Vec3 &v, const Vec3 &n) { return v - v.dot(n) * n; }
 
 // Two spheres of masses mi, mj, radii 1 (size 2), centres along the unit vector n with the
@@ -164,15 +178,9 @@ TEST(UzawaPair, SeparatingOrOutOfReachPairIsUntouched)
   // Report and multipliers explicitly, with a warm start of 0.
   ContactProblem p = make_problem(0.1, {1.0, 1.0}, {Vec3(-1, 0, 0), Vec3(1, 0, 0)});
   add_pair(p, 0, 1, Vec3(0, 0, 0), Vec3(2, 0, 0), 1.0, 1.0);
-  std::vector<double> mu{0.0};
-  std::vector<Vec3> u;
-  const SolveReport r = run_uzawa(p, mu, u);
-  EXPECT_TRUE(r.converged);
+  const SolveReport r = expect_free_motion_from(p, 0.0);
   EXPECT_EQ(r.iterations, 0);
   EXPECT_EQ(r.residual, 0.0);
-  EXPECT_EQ(mu[0], 0.0);
-  EXPECT_EQ(u[0], p.u_free[0]);
-  EXPECT_EQ(u[1], p.u_free[1]);
 }
 
 TEST(UzawaPair, StaleWarmStartOnSeparatingPairIsReleased)
@@ -181,13 +189,7 @@ TEST(UzawaPair, StaleWarmStartOnSeparatingPairIsReleased)
   // u_free exactly (the force cannot pull).
   ContactProblem p = make_problem(0.1, {1.0, 0.5}, {Vec3(-1, 0, 0), Vec3(1, 0, 0)});
   add_pair(p, 0, 1, Vec3(0, 0, 0), Vec3(2, 0, 0), 1.0, 1.0);
-  std::vector<double> mu{50.0};
-  std::vector<Vec3> u;
-  const SolveReport r = run_uzawa(p, mu, u);
-  EXPECT_TRUE(r.converged);
-  EXPECT_EQ(mu[0], 0.0);
-  EXPECT_EQ(u[0], p.u_free[0]);
-  EXPECT_EQ(u[1], p.u_free[1]);
+  expect_free_motion_from(p, 50.0);
 }
 
 // A sphere of radius r above a wall: after the step n.u = gap/h towards the wall at most, i.e.

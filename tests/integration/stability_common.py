@@ -205,33 +205,31 @@ def report(name, **values):
     print("MEASURED %s: %s" % (name, " ".join(parts)))
 
 
+def _stacked_layers(n, nlayer, r, spacing, dims):
+    """Layers of touching spheres of radius r, `spacing` apart along y (dims 1: rows of discs)
+    or z (dims 2: square layers): even layers n per row from r, touching each other and the
+    side walls of a box of width 2 r n; odd layers n - 1 per row in the hollows."""
+    pts = []
+    for k in range(nlayer):
+        first, count = (r, n) if k % 2 == 0 else (2.0 * r, n - 1)
+        row = [first + i * 2.0 * r for i in range(count)]
+        level = r + k * spacing
+        if dims == 1:
+            pts += [(x, level, 0.0) for x in row]
+        else:
+            pts += [(x, y, level) for x in row for y in row]
+    return np.array(pts)
+
+
 def hex_lattice_2d(ncol, nrow, r, gap=0.0):
     """Hexagonal packing of discs of radius r in a box of width 2 r ncol: even rows hold ncol
     discs touching each other and both side walls, odd rows ncol - 1 discs in the hollows.
     gap: extra vertical distance between rows (0 = touching). Returns (N, 3), z = 0."""
-    d = 2.0 * r
-    dy = math.sqrt(3.0) * r + gap
-    pts = []
-    for j in range(nrow):
-        y = r + j * dy
-        if j % 2 == 0:
-            pts += [(r + i * d, y, 0.0) for i in range(ncol)]
-        else:
-            pts += [(2.0 * r + i * d, y, 0.0) for i in range(ncol - 1)]
-    return np.array(pts)
+    return _stacked_layers(ncol, nrow, r, math.sqrt(3.0) * r + gap, 1)
 
 
 def fcc_lattice(n, nlayer, r, gap=0.0):
     """FCC packing of spheres of radius r stacked as (100) layers in a box of side 2 r n:
     even layers n x n touching spheres (touching the four side walls), odd layers
     (n-1) x (n-1) in the hollows, layer spacing sqrt(2) r (+ gap). Returns (N, 3)."""
-    d = 2.0 * r
-    dz = math.sqrt(2.0) * r + gap
-    pts = []
-    for k in range(nlayer):
-        z = r + k * dz
-        if k % 2 == 0:
-            pts += [(r + i * d, r + j * d, z) for i in range(n) for j in range(n)]
-        else:
-            pts += [(2.0 * r + i * d, 2.0 * r + j * d, z) for i in range(n - 1) for j in range(n - 1)]
-    return np.array(pts)
+    return _stacked_layers(n, nlayer, r, math.sqrt(2.0) * r + gap, 2)

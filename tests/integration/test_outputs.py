@@ -480,27 +480,29 @@ def part_c(args, known_bugs, options):
 
 # ------------------------------------------------------------------------------- (d)
 
-OVERLAP_DECK = """units           lj
-atom_style      sphere
-boundary        f f f
-region          box block 0 10 0 10 0 10
-create_box      1 box
-create_atoms    1 single 2.5 5 0.5 units box
-create_atoms    1 single 2.5 5 1.3 units box
-create_atoms    1 single 7.0 5 0.5 units box
-create_atoms    1 single 7.8 5 0.5 units box
-pair_style      none
-neighbor        0.3 bin
-timestep        {dt}
-{gravity}
-fix             1 all hardcontact wall zplane 0 NULL
-thermo_style    custom step ke f_1[2] f_1[7] f_1[4]
-thermo_modify   norm no format float %.17g
-thermo          1
-dump            a all custom 1 atoms.dump id mass x y z vx vy vz
-dump_modify     a format float %.17g
-run             {steps}
-"""
+def spheres_on_floor(xlo, xhi, centres, neighbor, forces, thermo, outputs=""):
+    """A deck template (str.format fields dt, steps and those in forces) of unit spheres at
+    centres (x, y, z) above the plane z = 0, the fix's only wall, thermo every step."""
+    atoms = "".join("create_atoms    1 single %g %g %g units box\n" % c for c in centres)
+    return lr.preamble() + (
+        "region          box block %g %g 0 10 0 10\n"
+        "create_box      1 box\n" % (xlo, xhi)) + atoms + (
+        "pair_style      none\n"
+        "neighbor        %g bin\n"
+        "timestep        {dt}\n"
+        "%s\n"
+        "fix             1 all hardcontact wall zplane 0 NULL\n"
+        "thermo_style    custom step ke %s\n"
+        "thermo_modify   norm no format float %%.17g\n"
+        "thermo          1\n"
+        "%s"
+        "run             {steps}\n" % (neighbor, forces, thermo, outputs))
+
+
+OVERLAP_DECK = spheres_on_floor(0, 10, [(2.5, 5, 0.5), (2.5, 5, 1.3), (7.0, 5, 0.5), (7.8, 5, 0.5)],
+                                0.3, "{gravity}", "f_1[2] f_1[7] f_1[4]",
+                                "dump            a all custom 1 atoms.dump id mass x y z vx vy vz\n"
+                                "dump_modify     a format float %.17g\n")
 
 
 def overlaps(frame):
@@ -509,26 +511,8 @@ def overlaps(frame):
     return np.array([1.0 - np.linalg.norm(x[1] - x[0]), 1.0 - np.linalg.norm(x[3] - x[2])])
 
 
-ROW_DECK = """units           lj
-atom_style      sphere
-boundary        f f f
-region          box block -20 30 0 10 0 10
-create_box      1 box
-create_atoms    1 single 3.0 5 0.5 units box
-create_atoms    1 single 3.8 5 0.5 units box
-create_atoms    1 single 4.6 5 0.5 units box
-create_atoms    1 single 5.4 5 0.5 units box
-create_atoms    1 single 6.2 5 0.5 units box
-pair_style      none
-neighbor        8.0 bin
-timestep        {dt}
-fix             g all gravity {g} vector 0 0 -1
-fix             1 all hardcontact wall zplane 0 NULL
-thermo_style    custom step ke f_1[2] f_1[4]
-thermo_modify   norm no format float %.17g
-thermo          1
-run             {steps}
-"""
+ROW_DECK = spheres_on_floor(-20, 30, [(x, 5, 0.5) for x in (3.0, 3.8, 4.6, 5.4, 6.2)], 8.0,
+                            "fix             g all gravity {g} vector 0 0 -1", "f_1[2] f_1[4]")
 
 
 def part_d_row(args, known_bugs):

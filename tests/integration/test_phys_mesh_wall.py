@@ -117,25 +117,27 @@ run             600
 """
 
 
-def incline_test(args):
+def run_incline(args, tag, wall_setup, wall):
+    """The sphere rolling down the slope (the INCLINE deck) with the given wall, in
+    <workdir>/<tag> beside the slope's STL file; its thermo."""
     c, s = math.cos(THETA), math.sin(THETA)
-    along, normal = np.array([c, 0.0, -s]), np.array([s, 0.0, c])
     # sphere touching the slope at its origin
-    x0, _, z0 = 0.5 * normal
+    x0, _, z0 = 0.5 * np.array([s, 0.0, c])
     fmt = dict(x0=repr(float(x0)), z0=repr(float(z0)), h=H, c=repr(c), s=repr(s))
-    runs = {}
+    wd = lr.fresh_workdir("%s/%s" % (args.workdir, tag))
+    write_ascii_stl("%s/slope.stl" % wd, slope_triangles())
+    deck = INCLINE.format(wall_setup=wall_setup, wall=wall, **fmt)
+    return lr.run_deck(args.lmp, deck, args.np, wd, timeout=args.timeout).thermo[-1]
+
+
+def incline_test(args):
+    s = math.sin(THETA)
+    m = run_incline(args, "incline_mesh", "", "wall stl slope.stl")
     # LIGGGHTS 3.8 has no region walls (lammps_compat.h): there the analytic answer alone
-    kinds = ("mesh",) if getattr(args.lmp, "name", "") == "liggghts" else ("mesh", "region")
-    for kind in kinds:
-        wd = lr.fresh_workdir("%s/incline_%s" % (args.workdir, kind))
-        if kind == "mesh":
-            write_ascii_stl("%s/slope.stl" % wd, slope_triangles())
-            deck = INCLINE.format(wall_setup="", wall="wall stl slope.stl", **fmt)
-        else:
-            deck = INCLINE.format(wall_setup="region slope plane 0 0 0 %r 0 %r side in" % (s, c),
-                                  wall="wall region slope", **fmt)
-        runs[kind] = lr.run_deck(args.lmp, deck, args.np, wd, timeout=args.timeout).thermo[-1]
-    m, r = runs["mesh"], runs.get("region")
+    r = None
+    if getattr(args.lmp, "name", "") != "liggghts":
+        r = run_incline(args, "incline_region", "region slope plane 0 0 0 %r 0 %r side in"
+                        % (s, math.cos(THETA)), "wall region slope")
     t = np.asarray(m["Step"], dtype=float) * H
     a = 5.0 / 7.0 * s
     vs = np.asarray(m["v_vs"])
@@ -405,64 +407,49 @@ def restart_test(args):
              "250 (largest difference of vx, omega, gap %.3g)" % da)
 
 
+def run_liggghts_floor(args, tag, vx, steps, mesh_fix, vz_column=None):
+    """The conveyor deck (friction 0.3, the floor moving at vx) on LIGGGHTS with its floor read
+    by mesh_fix (a fix mesh/surface named cad, with what moves it) in place of `wall stl ...
+    move`; v_vz reports vz_column when given. Its thermo after `steps` steps."""
+    wd = lr.fresh_workdir("%s/%s" % (args.workdir, tag))
+    # LIGGGHTS keeps a moving mesh inside the box: this floor goes from x = -20..20 to -14..26
+    # (and bins its triangles by their size within the box: cells of 1 x 0.95)
+    write_ascii_stl("%s/floor.stl" % wd, grid([-20, -1.9, 0], [1, 0, 0], [0, 0.95, 0], 40, 4))
+    deck = (CONVEYOR.format(vx=vx, vz=0.0, friction="friction 0.3", h=H) + "run %d\n" % steps)
+    deck = deck.replace("fix             hc all hardcontact tol 1e-4 friction 0.3 wall stl "
+                        "floor.stl move v_xf NULL v_zf", mesh_fix + "\nfix             hc all "
+                        "hardcontact tol 1e-4 friction 0.3 wall mesh cad")
+    if vz_column:
+        deck = deck.replace("variable        vz equal vz[1]", "variable        vz equal " + vz_column)
+    return lr.run_deck(args.lmp, deck, args.np, wd, timeout=args.timeout).thermo[-1]
+
+
 def liggghts_mesh_fix_test(args):
     """LIGGGHTS's own mesh walls, read through fix mesh/surface (the host rewrites the deck)."""
-    c, s = math.cos(THETA), math.sin(THETA)
-    along, normal = np.array([c, 0.0, -s]), np.array([s, 0.0, c])
-    x0, _, z0 = 0.5 * normal
-    fmt = dict(x0=repr(float(x0)), z0=repr(float(z0)), h=H, c=repr(c), s=repr(s))
-    runs = {}
-    for kind in ("stl", "fix"):
-        wd = lr.fresh_workdir("%s/lig_incline_%s" % (args.workdir, kind))
-        write_ascii_stl("%s/slope.stl" % wd, slope_triangles())
-        if kind == "stl":
-            deck = INCLINE.format(wall_setup="", wall="wall stl slope.stl", **fmt)
-        else:
-            deck = INCLINE.format(wall_setup="fix             cad all mesh/surface file slope.stl "
-                                  "type 1", wall="wall mesh cad", **fmt)
-        runs[kind] = lr.run_deck(args.lmp, deck, args.np, wd, timeout=args.timeout).thermo[-1]
+    runs = {"stl": run_incline(args, "lig_incline_stl", "", "wall stl slope.stl"),
+            "fix": run_incline(args, "lig_incline_fix", "fix             cad all mesh/surface "
+                               "file slope.stl type 1", "wall mesh cad")}
     diff = max(float(np.abs(np.asarray(runs["stl"][k]) - np.asarray(runs["fix"][k])).max())
                for k in ("v_s", "v_vs", "v_hgt"))
     lr.check(diff == 0.0, "LIGGGHTS wall mesh: the slope read through fix mesh/surface rolls the "
              "sphere as wall stl on the same file, to the bit (largest difference %.3g)" % diff)
     # the conveyor: fix move/mesh linear in place of move v_xf
     V, MU = 2.0, 0.3
-    wd = lr.fresh_workdir("%s/lig_conveyor" % args.workdir)
-    # LIGGGHTS keeps a moving mesh inside the box: this floor goes from x = -20..20 to -14..26
-    # (and bins its triangles by their size within the box: cells of 1 x 0.95)
-    write_ascii_stl("%s/floor.stl" % wd, grid([-20, -1.9, 0], [1, 0, 0], [0, 0.95, 0], 40, 4))
-    deck = (CONVEYOR.format(vx=V, vz=0.0, friction="friction %g" % MU, h=H) + "run 300\n").replace(
-        "fix             hc all hardcontact tol 1e-4 friction 0.3 wall stl floor.stl move v_xf "
-        "NULL v_zf",
-        "fix             cad all mesh/surface file floor.stl type 1\n"
-        "fix             mv all move/mesh mesh cad linear %g 0 0\n"
-        "fix             hc all hardcontact tol 1e-4 friction 0.3 wall mesh cad" % V)
-    th = lr.run_deck(args.lmp, deck, args.np, wd, timeout=args.timeout).thermo[-1]
+    th = run_liggghts_floor(args, "lig_conveyor", V, 300, "fix             cad all mesh/surface "
+                            "file floor.stl type 1\nfix             mv all move/mesh mesh cad "
+                            "linear %g 0 0" % V)
     t = np.asarray(th["Step"], dtype=float) * H
     pc.check_conveyor(t, th, V, MU, H, "a LIGGGHTS mesh floor moved by fix move/mesh linear")
     # the same conveyor as a belt: the floor stays, its surface moves (surface_vel)
-    wd = lr.fresh_workdir("%s/lig_belt" % args.workdir)
-    write_ascii_stl("%s/floor.stl" % wd, grid([-20, -1.9, 0], [1, 0, 0], [0, 0.95, 0], 40, 4))
-    deck = (CONVEYOR.format(vx=0.0, vz=0.0, friction="friction %g" % MU, h=H) + "run 300\n").replace(
-        "fix             hc all hardcontact tol 1e-4 friction 0.3 wall stl floor.stl move v_xf "
-        "NULL v_zf",
-        "fix             cad all mesh/surface file floor.stl type 1 surface_vel %g 0 0\n"
-        "fix             hc all hardcontact tol 1e-4 friction 0.3 wall mesh cad" % V)
-    th = lr.run_deck(args.lmp, deck, args.np, wd, timeout=args.timeout).thermo[-1]
+    th = run_liggghts_floor(args, "lig_belt", 0.0, 300, "fix             cad all mesh/surface "
+                            "file floor.stl type 1 surface_vel %g 0 0" % V)
     pc.check_conveyor(t, th, V, MU, H, "a LIGGGHTS belt (fix mesh/surface ... surface_vel, the "
                       "mesh at rest)")
     # a turntable (surface_ang_vel): the sphere at rest 2 from the axis, the surface under it
     # moving at omega 2 along +y, is pushed along +y at mu g while it slides
-    wd = lr.fresh_workdir("%s/lig_turntable" % args.workdir)
-    write_ascii_stl("%s/floor.stl" % wd, grid([-20, -1.9, 0], [1, 0, 0], [0, 0.95, 0], 40, 4))
-    deck = (CONVEYOR.format(vx=0.0, vz=0.0, friction="friction %g" % MU, h=H) + "run 40\n").replace(
-        "fix             hc all hardcontact tol 1e-4 friction 0.3 wall stl floor.stl move v_xf "
-        "NULL v_zf",
-        "fix             cad all mesh/surface file floor.stl type 1 surface_ang_vel origin -4 0 0 "
-        "axis 0 0 1 omega 0.5\n"
-        "fix             hc all hardcontact tol 1e-4 friction 0.3 wall mesh cad").replace(
-        "variable        vz equal vz[1]", "variable        vz equal vy[1]")
-    th = lr.run_deck(args.lmp, deck, args.np, wd, timeout=args.timeout).thermo[-1]
+    th = run_liggghts_floor(args, "lig_turntable", 0.0, 40, "fix             cad all "
+                            "mesh/surface file floor.stl type 1 surface_ang_vel origin -4 0 0 "
+                            "axis 0 0 1 omega 0.5", vz_column="vy[1]")
     t = np.asarray(th["Step"], dtype=float) * H
     err = float(np.abs(np.asarray(th["v_vz"]) - MU * t).max())
     # (the surface's direction under the sphere turns as it moves: 3e-6 by t = 0.4)

@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """The developers' problem dump (HARDCONTACT_DUMP_PROBLEMS, src/core/problem_dump.h, used by
-bench/run_spectrum.sh) writes the problem the solver was given: 27 spheres with random
+bench/studies/spectrum/run.sh) writes the problem the solver was given: 27 spheres with random
 velocities in a box with a floor, under gravity, 12 steps at tol 1e-10, serially and under
 mpirun (one file per rank, prefix.<step>.<rank>). For every step:
   * the bodies are the dumped atoms: 1/m and u_free = v^n + h g (v^n from the atom dump of the
