@@ -16,7 +16,7 @@ if ! cmake -S "$ROOT" -B "$BUILD_DIR" "$@" >"$BUILD_DIR/configure.log" 2>&1; the
   echo "build: cmake configure FAILED (log: $BUILD_DIR/configure.log)" >&2
   exit 1
 fi
-summary='^-- (LAMMPS fix API|LAMMPS headers|No liblammps|No tests|Modern LAMMPS host|LIGGGHTS host)'
+summary='^-- (LAMMPS fix API|LAMMPS headers|No liblammps|No tests|Modern LAMMPS host|LIGGGHTS host|Micro-benchmarks)'
 grep -E "$summary" "$BUILD_DIR/configure.log" \
   | sed 's/^-- /build: /' || true
 

@@ -57,6 +57,10 @@ scenes.write(tray, sys.argv[1])
 print(tray["walls"])
 PYEOF
 }
+# bench_thermo [--each] LOG FIELD...: numbers of LOG's last thermo block for a CSV row, one line
+# (or one per row of the window with --each); fields such as rows, mean:f_hc[1], max:f_hc[7],
+# delta:f_hc[6], loop, load (python3 -m hctools thermo -h: python/hctools/summary.py)
+bench_thermo() { PYTHONPATH="$ROOT/python${PYTHONPATH:+:$PYTHONPATH}" "$PY" -m hctools thermo "$@"; }
 # bench_load1: the 1-minute load average, recorded beside each timed run
 bench_load1() { cut -d' ' -f1 /proc/loadavg; }
 # bench_restart_deck OUT LINES: a deck that reads the restart ${R} and goes on under gravity

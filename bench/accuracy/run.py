@@ -4,12 +4,10 @@ writes the CSV files of bench/results/. Called by bench/run.sh accuracy (see the
 
 import argparse
 import csv
-import json
 import math
 import os
 import resource
 import shutil
-import subprocess
 import sys
 import time
 from pathlib import Path
@@ -18,8 +16,9 @@ import numpy as np
 
 HERE = Path(__file__).resolve().parent
 sys.path.insert(0, str(HERE))
+sys.path.insert(0, str(HERE.parent.parent / "python"))
 import decks  # noqa: E402
-import lmp  # noqa: E402
+import hctools as hc  # noqa: E402
 import scenes  # noqa: E402
 
 SOLVERS = ["cg", "apgd", "pgs", "uzawa"]
@@ -93,7 +92,8 @@ class Runner:
     def lammps(self, exe, deck, workdir, timeout=1800):
         """Run a deck; returns (log text, wall seconds, cpu seconds of the child)."""
         before = resource.getrusage(resource.RUSAGE_CHILDREN)
-        text, secs = lmp.run(exe, deck, workdir, timeout=timeout)
+        r = hc.run_deck(exe, deck, workdir=workdir, timeout=timeout, args=["-screen", "none"])
+        text, secs = r.log, r.seconds
         after = resource.getrusage(resource.RUSAGE_CHILDREN)
         cpu = (after.ru_utime - before.ru_utime) + (after.ru_stime - before.ru_stime)
         return text, secs, cpu
@@ -103,8 +103,8 @@ class Runner:
 
 def window_stats(text):
     """Statistics of the last thermo block (the measured window) and its timing."""
-    blocks = lmp.thermo_blocks(text)
-    tims = lmp.timings(text)
+    blocks = hc.parse_thermo(text)
+    tims = hc.loop_times(text)
     th, tm = blocks[-1], tims[-1]
     rows = slice(1, None)    # row 0 is the setup of the run (no solve)
     it = th["f_hc[1]"][rows]
@@ -243,7 +243,7 @@ def main():
             text, secs, cpu = R.lammps(R.lmp_hard, deck, wd / "reference")
             probe_restart = str(wd / "reference" / "probe.restart")
             R.say("  reference run (apgd 1e-8) in %.1f s, probe state at step %d" % (secs, spec["probe"]))
-            ref = lmp.thermo_blocks(text)
+            ref = hc.parse_thermo(text)
             info.update(probe_step=spec["probe"],
                         vmax_ref=float(max(b["c_vmax"].max() for b in ref)))
         info["check"] = check
@@ -253,15 +253,15 @@ def main():
         try:
             deck = decks.probe(sc, probe_restart, "exact", 1e-10, "no", check=check, maxiter=1000000)
             text, secs, cpu = R.lammps(R.lmp_hard, deck, wd / "exact", timeout=cfg["exact_cap"])
-            fr = lmp.read_dump(wd / "exact" / "probe.dump")
-            v0 = velocities(fr[0][1])
-            exact_v = velocities(fr[-1][1])
+            fr = hc.read_dump(wd / "exact" / "probe.dump")
+            v0 = velocities(fr[0].columns)
+            exact_v = velocities(fr[-1].columns)
             m = scenes.mass(sc)  # noqa: F841 (documentation: gravity is the only force)
             ufree = v0.copy()
             ufree[:, 1] -= sc["gravity"] * sc["h"]
             vscale = float(np.linalg.norm(ufree, axis=1).max())
-            tm = lmp.timings(text)[-1]
-            th = lmp.thermo_blocks(text)[-1]
+            tm = hc.loop_times(text)[-1]
+            th = hc.parse_thermo(text)[-1]
             info.update(exact_seconds=tm["loop"], exact_seconds_cpu=tm["loop"] * min(tm.get("cpu_frac", 1.0), 1.0), exact_iterations=int(th["f_hc[1]"][-1]),
                         exact_rows=int(th["f_hc[3]"][-1]), exact_residual=float(th["f_hc[5]"][-1]),
                         vscale=vscale)
@@ -302,9 +302,9 @@ def main():
                         row["t_phys_cpu"] = st["t_step_cpu"] / sc["h"]
                         # spurious gaps of the active contacts (dumped 4 times in the window)
                         try:
-                            fa = lmp.read_dump(wd / tag / "gap.dump")
-                            fl = {s: f for s, f in lmp.read_dump(wd / tag / "gap.local")}
-                            gaps = np.concatenate([pair_gaps(f, fl[s]) for s, f in fa if s in fl and s > fa[0][0]] or [np.zeros(0)])
+                            fa = hc.read_dump(wd / tag / "gap.dump")
+                            fl = {fr.timestep: fr.columns for fr in hc.read_dump_local(wd / tag / "gap.local")}
+                            gaps = np.concatenate([pair_gaps(f, fl[s]) for s, f, _ in fa if s in fl and s > fa[0].timestep] or [np.zeros(0)])
                             if len(gaps):
                                 row.update(gap_pos_mean=float(np.maximum(gaps, 0).mean()),
                                            gap_mean=float(gaps.mean()), gap_max=float(gaps.max()),
@@ -324,15 +324,15 @@ def main():
                                 deck = decks.probe(sc, probe_restart, solver, tol, warm, check=check)
                                 ptext, psecs, pcpu = R.lammps(R.lmp_hard, deck, wd / tag / "probe",
                                                               timeout=2 * cap + 120)
-                                fr = lmp.read_dump(wd / tag / "probe" / "probe.dump")
-                                v = velocities(fr[-1][1])
+                                fr = hc.read_dump(wd / tag / "probe" / "probe.dump")
+                                v = velocities(fr[-1].columns)
                                 err = np.linalg.norm(v - exact_v, axis=1)
-                                pth = lmp.thermo_blocks(ptext)[-1]
+                                pth = hc.parse_thermo(ptext)[-1]
                                 row.update(vel_err=float(err.max()) / info["vscale"],
                                            vel_err_rms=float(np.sqrt((err ** 2).mean())) / info["vscale"],
                                            probe_iter=int(pth["f_hc[1]"][-1]),
-                                           probe_t=lmp.timings(ptext)[-1].get("Modify", float("nan")),
-                                           probe_t_cpu=lmp.timings(ptext)[-1].get("Modify", float("nan")) * min(lmp.timings(ptext)[-1].get("cpu_frac", float("nan")), 1.0))
+                                           probe_t=hc.loop_times(ptext)[-1].get("Modify", float("nan")),
+                                           probe_t_cpu=hc.loop_times(ptext)[-1].get("Modify", float("nan")) * min(hc.loop_times(ptext)[-1].get("cpu_frac", float("nan")), 1.0))
                             except Exception as e:  # noqa: BLE001
                                 R.say("  probe %s failed: %s" % (tag, str(e)[:200]))
                         matrix_rows.append(row)
@@ -372,9 +372,9 @@ def soft_overlap(wd, sc, ids_radius):
     """Largest relative overlap of a soft run: all pairs and walls of the dumped frames, and
     the pair carrying the largest force at every tracked step (track.txt)."""
     worst = 0.0
-    frames = lmp.read_dump(wd / "soft.dump")
-    for _, f in frames[1:]:
-        worst = max(worst, all_overlaps(f, sc["wall_list"]))
+    frames = hc.read_dump(wd / "soft.dump")
+    for fr in frames[1:]:
+        worst = max(worst, all_overlaps(fr.columns, sc["wall_list"]))
     tr = np.loadtxt(str(wd / "track.txt"), comments="#", ndmin=2)
     if len(tr):
         ok = tr[:, 1] > 0    # the reduction of no pair at all gives -1e20
@@ -400,7 +400,7 @@ def soft_pile(R, sc, spec, wd, matrix_rows):
     rows = []
     name = sc["name"]
     L = sc["layers"]
-    loc = lmp.read_dump(wd / "settle" / "start.local")[-1][1]
+    loc = hc.read_dump_local(wd / "settle" / "start.local")[-1].columns
     data = (wd / "settle" / "start.data")
     r = 0.5 * sc["diameter"]
     ids_radius = np.zeros(len(r) + 1)
@@ -441,7 +441,7 @@ def soft_pile(R, sc, spec, wd, matrix_rows):
             deck = decks.soft(sc, "../settle/start.data", kn, gn, dt, n_settle, visc, n_window,
                               10, max(n_window // 5, 1), cfg["soft_cap"])
             text, secs, cpu = R.lammps(R.lmp_soft, deck, run_dir)
-            tm = lmp.timings(text)[-1]
+            tm = hc.loop_times(text)[-1]
             meas = soft_overlap(run_dir, sc, ids_radius)
             steps = tm["steps"]
             t_step = (tm["loop"] - tm.get("Output", 0.0)) / max(steps, 1)
@@ -511,7 +511,7 @@ def soft_pour(R, sc, spec, wd, matrix_rows, info):
             deck = decks.soft(sc, data, kn, gn, dt, 0, 0.0, nsteps, 10, max(nsteps // 50, 1),
                               cfg["soft_cap"] * (3 if full else 1), zero_velocity=False)
             text, secs, cpu = R.lammps(R.lmp_soft, deck, run_dir)
-            tm = lmp.timings(text)[-1]
+            tm = hc.loop_times(text)[-1]
             steps = tm["steps"]
             meas = soft_overlap(run_dir, sc, ids_radius)
             t_step = (tm["loop"] - tm.get("Output", 0.0)) / max(steps, 1)
@@ -550,7 +550,7 @@ def slide_runs(R):
         wd.mkdir(parents=True, exist_ok=True)
         scenes.write_data(wd / "slide.data", sc)
         text, secs, cpu = R.lammps(R.lmp_hard, decks.slide(sc, nsteps=R.cfg["slide_steps"]), wd)
-        th = lmp.thermo_blocks(text)[-1]
+        th = hc.parse_thermo(text)[-1]
         act = th["f_hc[4]"][1:] > 0
         gap = th["v_gap"][1:][act]
         vt = th["v_vt"][1:][act]

@@ -14,7 +14,6 @@ report.py its .md and a plot of the mean height against the loop time.
 import argparse
 import concurrent.futures as cf
 import csv
-import importlib.util
 import math
 import os
 import sys
@@ -26,12 +25,10 @@ import numpy as np
 HERE = Path(__file__).resolve().parent
 ROOT = HERE.parents[1]
 sys.path.insert(0, str(ROOT / "bench" / "perf"))
+sys.path.insert(0, str(ROOT / "python"))
 import decks  # noqa: E402
+import hctools as hc  # noqa: E402
 import scenes  # noqa: E402
-
-_spec = importlib.util.spec_from_file_location("acc_lmp", str(ROOT / "bench" / "accuracy" / "lmp.py"))
-lmp = importlib.util.module_from_spec(_spec)
-_spec.loader.exec_module(lmp)
 
 MU = 0.5
 REST = 1e-6    # kinetic energy per sphere, in m g d, below which the pile is at rest
@@ -67,8 +64,8 @@ def soft_deck(scene, data, overlap, T):
 
 
 def summarise(rid, kind, text, wall, scene, cfg):
-    b = lmp.thermo_blocks(text)[0]
-    t = lmp.timings(text)[0]
+    b = hc.parse_thermo(text)[0]
+    t = hc.loop_times(text)[0]
     mgd = scene["mean_mass"] * scene["mean_d"]
     ke = b["KinEng"] / scene["n"] / mgd
     time_ = b["Time"]
@@ -153,8 +150,9 @@ def main():
             return summarise(rid, kind, log.read_text(), 0.0, scene, cfg)
         t0 = time.time()
         try:
-            text, wall = lmp.run(exe, deck, wd, timeout=7200)
-        except lmp.LammpsError as e:
+            r = hc.run_deck(exe, deck, workdir=wd, timeout=7200, args=["-screen", "none"])
+            text, wall = r.log, r.seconds
+        except hc.LammpsRunError as e:
             print("%s: FAILED %s" % (rid, str(e).splitlines()[0]), flush=True)
             return None
         print("%s: %.0f s" % (rid, time.time() - t0), flush=True)

@@ -10,8 +10,8 @@ source "$(dirname "${BASH_SOURCE[0]}")/../common.sh" friction_front_heap_ "$@"
 HEAP="$ROOT/examples/heap"
 SEEDS=(4767548 1234567 7654321); EXTRA=()
 [ "$MODE" = quick ] && { SEEDS=(4767548); EXTRA=(-var npour 400 -var tend 30); }
-CSV="$RESULTS/friction_front_heap${MODE/full/}.csv"
-CSV="${CSV/quick/_quick}"
+CSV="$RESULTS/friction_front_heap.csv"
+[ "$MODE" = quick ] && CSV="$RESULTS/friction_front_heap_quick.csv"
 echo "run,kind,tol,seed,flank_deg,cone_deg,peak,loop_s,steps,it_mean,overlap_max,maxiter_stops,load1" > "$CSV"
 for seed in "${SEEDS[@]}"; do
   for tol in 1e-2 1e-3 1e-4 soft; do
@@ -22,32 +22,20 @@ for seed in "${SEEDS[@]}"; do
     (cd "$d" && "$exe" -in "$deck" -var mu 0.5 -var seed "$seed" "${args[@]}" "${EXTRA[@]}" \
        -log log.lammps -echo none -screen none > /dev/null)
     angle=$("$PY" "$HEAP/heap_angle.py" --floor 1.0 "$d/heap.dump")
-    "$PY" - "$d/log.lammps" "$tol" "$seed" "$angle" "$(bench_load1)" >> "$CSV" <<'PY'
-import re, sys
-log, tol, seed, angle, load = sys.argv[1:]
-text = open(log).read()
-loop = re.findall(r"^Loop time of ([0-9.eE+-]+) on \d+ procs for (\d+) steps", text, re.M)[-1]
-m = re.search(r"flank ([0-9.]+) deg", angle)
-flank = m.group(1) if m else "nan"
-cone = re.search(r"cone ([0-9.]+) deg", angle).group(1)
-peak = re.search(r"peak ([0-9.]+)", angle).group(1)
-it = ov = stops = ""
-if tol != "soft":
-    rows, cols = [], None
-    for line in text.splitlines():
-        w = line.split()
-        if w and w[0] == "Step":
-            cols = w
-            continue
-        if cols and len(w) == len(cols) and w[0].isdigit():
-            rows.append(dict(zip(cols, w)))
-    its = [float(r["f_hc[1]"]) for r in rows if "f_hc[1]" in r][1:]
-    it = "%.1f" % (sum(its) / max(1, len(its)))
-    ov = "%.3g" % max(float(r["f_hc[7]"]) for r in rows if "f_hc[7]" in r)
-    stops = rows[-1].get("f_hc[6]", "")
-print(",".join([("hard_tol" + tol) if tol != "soft" else "soft", "soft" if tol == "soft" else "hard",
-                tol, seed, flank, cone, peak, loop[0], loop[1], it, ov, stops, load]))
-PY
+    load=$(bench_load1)
+    flank=$(sed -n 's/.*flank \([0-9.]*\) deg.*/\1/p' <<< "$angle"); flank=${flank:-nan}
+    cone=$(sed -n 's/.*cone \([0-9.]*\) deg.*/\1/p' <<< "$angle")
+    peak=$(sed -n 's/.*peak \([0-9.]*\).*/\1/p' <<< "$angle")
+    if [ "$tol" = soft ]; then
+      IFS=, read -r loop steps < <(bench_thermo "$d/log.lammps" loop steps)
+      echo "soft,soft,soft,$seed,$flank,$cone,$peak,$loop,$steps,,,,$load" >> "$CSV"
+    else
+      # iterations: the mean over the rows after the first (step 0: no solve); overlap: the
+      # largest of every row; maxiter stops: the counter at the end
+      IFS=, read -r loop steps it < <(bench_thermo "$d/log.lammps" loop steps mean:f_hc[1])
+      IFS=, read -r ov stops < <(bench_thermo --keep-first "$d/log.lammps" max:f_hc[7] last:f_hc[6])
+      echo "hard_tol$tol,hard,$tol,$seed,$flank,$cone,$peak,$loop,$steps,$it,$ov,$stops,$load" >> "$CSV"
+    fi
     tail -1 "$CSV"
   done
 done

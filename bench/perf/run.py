@@ -5,11 +5,9 @@ solver output of the hard runs) and perf_machine.csv into --results (bench/resul
 
 import argparse
 import csv
-import importlib.util
 import math
 import os
 import re
-import subprocess
 import sys
 import time
 from pathlib import Path
@@ -18,14 +16,10 @@ import numpy as np
 
 HERE = Path(__file__).resolve().parent
 sys.path.insert(0, str(HERE))
+sys.path.insert(0, str(HERE.parent.parent / "python"))
 import decks  # noqa: E402
+import hctools as hc  # noqa: E402
 import scenes  # noqa: E402
-
-# running decks and reading logs: bench/accuracy/lmp.py (loaded by path: the accuracy
-# benchmark has modules named like ours)
-_spec = importlib.util.spec_from_file_location("acc_lmp", str(HERE.parent / "accuracy" / "lmp.py"))
-lmp = importlib.util.module_from_spec(_spec)
-_spec.loader.exec_module(lmp)
 
 SETTLE_KE = 5e-3   # "settled": kinetic energy per sphere stays below this x mean m g d
 
@@ -178,24 +172,14 @@ class Bench:
     def launch(self, exe, deck, rundir, ranks=1, timeout=1800):
         """Run a deck (serial, or mpirun -np ranks); return (log text, wall s, load before,
         load after)."""
-        rundir.mkdir(parents=True, exist_ok=True)
-        (rundir / "in.deck").write_text(deck)
         before = loadavg()
         ticks = cpu_ticks()
+        # ranks up to the core count: MPI busy-polls as a plain mpirun does (hctools' default is
+        # to yield, for ranks beyond the cores); beyond, it yields
+        env = {"OMPI_MCA_mpi_yield_when_idle": "0"} if ranks <= (os.cpu_count() or 1) else None
         t = time.time()
-        if ranks == 1:
-            text, _ = lmp.run(exe, deck, rundir, timeout=timeout)
-        else:
-            env = dict(os.environ, OMP_NUM_THREADS="1", OMPI_ALLOW_RUN_AS_ROOT="1",
-                       OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
-            p = subprocess.run(["mpirun", "--oversubscribe", "-np", str(ranks), str(exe), "-in",
-                                "in.deck", "-log", "log.lammps", "-screen", "none"],
-                               cwd=str(rundir), stdout=subprocess.PIPE, stderr=subprocess.PIPE,
-                               text=True, timeout=timeout, env=env)
-            text = (rundir / "log.lammps").read_text()
-            if p.returncode != 0 or "ERROR" in text:
-                raise lmp.LammpsError("mpirun in %s failed (rc %d): %s" % (rundir, p.returncode,
-                                                                            p.stderr[-500:]))
+        text = hc.run_deck(exe, deck, np=ranks, workdir=rundir, timeout=timeout,
+                           args=["-screen", "none"], env=env).log
         wall = time.time() - t
         self.cpu = cpu_share(ticks, cpu_ticks())
         return text, wall, before, loadavg()
@@ -219,12 +203,12 @@ class Bench:
                                                              "+".join(str(p[0]) for p in phases), ranks))
         try:
             text, wall, lb, la = self.launch(self.a.lmp, deck, rundir, ranks)
-        except lmp.LammpsError as e:
+        except hc.LammpsRunError as e:
             self.note("FAILED: %s" % str(e).splitlines()[0])
             self.runs.append(dict(id=rid, group=group, solver=solver, tol=tol, n=scene["n"],
                                   ranks=ranks, status="failed", part=self.part))
             return []
-        blocks, times, comms = lmp.thermo_blocks(text), lmp.timings(text), solver_comm(text)
+        blocks, times, comms = hc.parse_thermo(text), hc.loop_times(text), solver_comm(text)
         mgd = scene["mean_mass"] * scene["mean_d"]
         rows = []
         for k, (phase, name) in enumerate(zip(phases, names)):
@@ -300,10 +284,10 @@ class Bench:
             rid, overlap, p["kn"], p["dt"], nsteps, scene["n"]))
         try:
             text, wall, lb, la = self.launch(self.a.soft_lmp, deck, rundir)
-        except lmp.LammpsError as e:
+        except hc.LammpsRunError as e:
             self.note("FAILED: %s" % str(e).splitlines()[0])
             return None
-        b, t = lmp.thermo_blocks(text)[0], lmp.timings(text)[0]
+        b, t = hc.parse_thermo(text)[0], hc.loop_times(text)[0]
         radius = 0.5 * np.asarray(scene["d"])
         pair = []
         for f, dist, i, j in zip(b["c_red[1]"], b["c_red[2]"], b["c_red[3]"], b["c_red[4]"]):

@@ -17,34 +17,23 @@ echo "spheres,steps,setup_s,loop_s,s_per_step,iterations_per_step,rows_end,peak_
 for size in "${SIZES[@]}"; do
   read -r n nz steps <<< "$size"
   echo "scale: $n x $n x $nz spheres, $steps steps"
-  "$PY" - "$LMP" "$ROOT/bench/scale/in.scale3d" "$WORK" "$n" "$nz" "$steps" >> "$CSV" <<'PYEOF'
-import resource, subprocess, sys, time
-lmp, deck, work, n, nz, steps = sys.argv[1:]
-load_before = open("/proc/loadavg").read().split()[0]
-log = "%s/log.%sx%sx%s" % (work, n, n, nz)
-t0 = time.time()
-subprocess.run([lmp, "-in", deck, "-var", "n", n, "-var", "nz", nz, "-var", "steps", steps,
-                "-log", log, "-echo", "none"], check=True, stdout=subprocess.DEVNULL, cwd=work)
-wall = time.time() - t0
+  "$PY" - "$ROOT" "$LMP" "$ROOT/bench/scale/in.scale3d" "$WORK" "$n" "$nz" "$steps" >> "$CSV" <<'PYEOF'
+import os, resource, sys
+root, lmp, deck, work, n, nz, steps = sys.argv[1:]
+sys.path.insert(0, os.path.join(root, "python"))
+import hctools as hc
+load_before = os.getloadavg()[0]
+r = hc.run_deck(lmp, deck, workdir=work, variables=dict(n=n, nz=nz, steps=steps),
+                args=["-echo", "none"], log_name="log.%sx%sx%s" % (n, n, nz), timeout=7200)
 rss_mb = resource.getrusage(resource.RUSAGE_CHILDREN).ru_maxrss / 1024.0
-rows, loop, mem, atoms, on = [], 0.0, 0.0, 0, False
-for line in open(log):
-    w = line.split()
-    if line.startswith("Per MPI rank memory"):
-        mem = float(line.split("=")[1].split("|")[2].split()[0])
-    if w[:1] == ["Step"]:
-        on = True
-        continue
-    if w[:1] == ["Loop"]:
-        loop, atoms, on = float(w[3]), int(w[-2]), False
-        continue
-    if on and len(w) == 7:
-        rows.append([float(v) for v in w])
-its = [r[2] for r in rows[1:]]    # iterations at the thermo steps (every 10)
-print("%d,%s,%.1f,%.1f,%.4f,%.1f,%d,%.0f,%.2f,%.0f,%s,%s" % (
-    atoms, steps, wall - loop, loop, loop / float(steps), sum(its) / max(len(its), 1),
-    rows[-1][3], rss_mb, rss_mb * 1024.0 / atoms, mem, load_before,
-    open("/proc/loadavg").read().split()[0]))
+mem = float(r.log.split("Per MPI rank memory")[1].split("=")[1].split("|")[2].split()[0])
+th, run = r.thermo[-1], hc.loop_times(r.log)[-1]
+its = th["f_hc[1]"][1:]    # iterations at the thermo steps (every 10; step 0 has no solve)
+atoms = run["atoms"]
+print("%d,%s,%.1f,%.1f,%.4f,%.1f,%d,%.0f,%.2f,%.0f,%.2f,%.2f" % (
+    atoms, steps, r.seconds - run["loop"], run["loop"], run["loop"] / float(steps),
+    its.mean() if len(its) else 0.0, th["f_hc[3]"][-1], rss_mb, rss_mb * 1024.0 / atoms, mem,
+    load_before, os.getloadavg()[0]))
 PYEOF
 done
 "$PY" - "$CSV" <<'PYEOF'

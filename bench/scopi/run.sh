@@ -20,36 +20,30 @@ OLD_LMP="${OLD_LMP:-}"
 STEPS=1000
 [ "$MODE" = quick ] && STEPS=200
 "$PY" "$ROOT/bench/scopi/make_data.py" "$WORK/data.scopi"
-"$PY" - "$OLD_LMP" "$LMP" "$ROOT/bench/scopi/in.box_spheres_3d" "$WORK" "$STEPS" \
+"$PY" - "$ROOT" "$OLD_LMP" "$LMP" "$ROOT/bench/scopi/in.box_spheres_3d" "$WORK" "$STEPS" \
   "$RESULTS/scopi.csv" <<'PYEOF'
-import subprocess, sys
-old, new, deck, work, steps, csv = sys.argv[1:]
+import os, sys
+root, old, new, deck, work, steps, csv = sys.argv[1:]
+sys.path.insert(0, os.path.join(root, "python"))
+import hctools as hc
 runs = [("issue's build (4977451), default apgd", old, "default"),
         ("this build, default cg", new, "default"),
         ("this build, apgd", new, "apgd")]
 runs = [r for r in runs if r[1]]    # no OLD_LMP: this build only
 rows = []
 for label, lmp, solver in runs:
-    load0 = open("/proc/loadavg").read().split()[0]
-    log = "%s/log.%s.%s" % (work, "old" if lmp == old else "new", solver)
-    subprocess.run([lmp, "-in", deck, "-var", "data", "%s/data.scopi" % work, "-var", "solver", solver,
-                    "-var", "steps", steps, "-log", log, "-echo", "none"],
-                   check=True, stdout=subprocess.DEVNULL, cwd=work)
-    load1 = open("/proc/loadavg").read().split()[0]
-    its, cand, ov, stops, loop, on = [], [], [], 0, 0.0, False
-    for line in open(log):
-        w = line.split()
-        if w[:1] == ["Step"]:
-            on = True
-            continue
-        if w[:1] == ["Loop"]:
-            loop, on = float(w[3]), False
-            continue
-        if on and len(w) == 8 and w[0].isdigit() and int(w[0]) > 0:
-            its.append(float(w[3])); cand.append(float(w[4])); stops = int(float(w[6])); ov.append(float(w[7]))
+    load0 = "%.2f" % os.getloadavg()[0]
+    r = hc.run_deck(lmp, deck, workdir=work, variables=dict(data="%s/data.scopi" % work,
+                    solver=solver, steps=steps), args=["-echo", "none"], timeout=7200,
+                    log_name="log.%s.%s" % ("old" if lmp == old else "new", solver))
+    load1 = "%.2f" % os.getloadavg()[0]
+    th, loop = r.thermo[-1], hc.loop_times(r.log)[-1]["loop"]
+    after = th["Step"] > 0    # step 0: no solve
+    its, cand, ov = list(th["f_hc[1]"][after]), list(th["f_hc[3]"][after]), list(th["f_hc[7]"][after])
+    stops = int(th["f_hc[6]"][-1])
     rows.append(dict(run=label, steps=len(its), loop_s=loop, ms_per_step=1e3 * loop / len(its),
-                     it_mean=sum(its) / len(its), it_max=max(its), rows_end=cand[-1],
-                     overlap_max=max(ov), maxiter_stops=stops, load_before=load0, load_after=load1))
+                     it_mean=float(sum(its)) / len(its), it_max=int(max(its)), rows_end=int(cand[-1]),
+                     overlap_max=float(max(ov)), maxiter_stops=stops, load_before=load0, load_after=load1))
 with open(csv, "w") as f:
     keys = list(rows[0])
     f.write(",".join(keys) + "\n")

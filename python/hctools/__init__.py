@@ -7,6 +7,8 @@
     data    write_data (atom_style sphere data files), write_stl, sphere_mass
     soft    hertz_params (the soft twin's gran/hertz/history settings)
     decks   preamble (the first lines of a deck of spheres)
+    summary window_values: a thermo block as numbers for a CSV row; from a shell,
+            python3 -m hctools thermo LOG rows mean:f_hc[1] loop ... (bench/common.sh's bench_thermo)
 
 Standard library and numpy only. A script outside python/ puts this folder on sys.path:
     sys.path.insert(0, os.path.join(<repository>, "python"))

@@ -142,6 +142,24 @@ class Logs(unittest.TestCase):
         self.assertTrue(np.array_equal(blocks[0]["f_hc[7]"], [0.0, 1.5e-5, 2.5e-5]))
         self.assertEqual(list(blocks[1]["Step"]), [2, 3])     # a run that died keeps its rows
 
+    def test_window_summary_and_rows(self):
+        from hctools.summary import window_values
+        got = window_values(LOG, ["rows", "mean:f_hc[7]", "max:c_zavg", "delta:Step", "loop",
+                                  "steps"], block=0)
+        self.assertEqual(got[0], 2)
+        self.assertAlmostEqual(got[1], 2e-5, places=15)
+        self.assertEqual(got[2:], [5.25, 2, 1.25, 2])
+        self.assertEqual(window_values(LOG, ["Step", "c_zavg"], 0, each=True), [[1, 5.25], [2, 5.125]])
+        self.assertEqual(window_values(LOG, ["rows"], 0, keep_first=True), [3])
+        self.assertEqual(window_values(LOG, ["half:c_zavg"], 0, keep_first=True), [(5.25 + 5.125) / 2])
+        self.assertEqual(window_values(LOG, ["time:Modify"], 0), [1.125])
+        self.assertEqual(window_values(LOG, ["sum:Step"], 0), [3])
+        # the last block is a run that died (no Loop time line): its loop time is unknown
+        self.assertEqual(window_values(LOG, ["rows", "last:Step"])[:2], [1, 3])
+        self.assertTrue(math.isnan(window_values(LOG, ["loop"])[0]))
+        with self.assertRaises(KeyError):
+            window_values(LOG, ["mean:f_hc[1]"])
+
     def test_liggghts_columns_named_as_lammps(self):
         b = hc.parse_thermo(LOG_LIGGGHTS)[0]
         self.assertIn("f_hc[7]", b)
