@@ -19,11 +19,10 @@ run() {    # run NAME BUILD LMP EXTRA
   local name="$1" build="$2" lmp="$3" extra="$4" log="$WORK/log.$1.$2"
   "$lmp" -in "$DECK" -var solver apgd -var nz "$NZ" -var n "$STEPS" -var extra "$extra" \
     -log "$log" -echo none > /dev/null
-  awk -v c="$name" -v b="$build" -v load="$(cut -d' ' -f1 /proc/loadavg)" '
-    /^ *Step/{f=1; next} /^Loop/{f=0; t=$4; n=$9}
-    f && NF >= 9 {it += $4; k++; if ($4 > mx) mx = $4; act = $6; if ($8 > ov) ov = $8; atoms = $2}
-    END{printf "%s,%s,%d,%d,%.3f,%.1f,%d,%d,%.3g,%s\n", c, b, atoms, n, t, it / k, mx, act, ov, load}' \
-    "$log" >> "$CSV"
+  # every thermo row, the first (step 0: no solve) too; spheres, steps, loop, iterations (mean,
+  # largest), active contacts at the end, largest overlap
+  bench_thermo --keep-first "$log" last:Atoms steps loop mean:f_hc[1] max:f_hc[1] last:f_hc[4] \
+    max:f_hc[2] load | sed "s/^/$name,$build,/" >> "$CSV"
 }
 if [ -n "${OLD_LMP:-}" ]; then run frictionless before "$OLD_LMP" ""; fi
 run frictionless now "$LMP" ""

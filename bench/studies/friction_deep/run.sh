@@ -37,23 +37,17 @@ run             ${n}
 EOF
 CSV="$RESULTS/friction_deep.csv"
 echo "case,step,iterations,active,loop_s,load1" > "$CSV"
-load() { cut -d' ' -f1 /proc/loadavg; }
 settle() {    # settle CASE SOLVER EXTRA
   local log="$WORK/log.$1"
   (cd "$WORK" && "$LMP" -in "$SETTLE_DECK" -var solver "$2" -var extra "$3" -var nz "$NZ" \
      -var n "$SETTLE" -var W "$1.restart" -log "$log" -echo none > /dev/null)
-  awk -v c="$1" -v l="$(load)" '/^ *Step/{f=1; next} /^Loop/{f=0; t=$4}
-    f && NF >= 9 && $1 ~ /^[0-9]+$/ {s[++k] = $1; it[k] = $4; a[k] = $6}
-    END{for (i = 2; i <= k; ++i) printf "%s,%d,%d,%d,%.3f,%s\n", c, s[i], it[i], a[i], t, l}' \
-    "$log" >> "$CSV"
+  bench_thermo --each "$log" Step f_hc[1] f_hc[4] loop load | sed "s/^/$1,/" >> "$CSV"
 }
 window() {    # window CASE TOL
   local log="$WORK/log.$1"
   (cd "$WORK" && "$LMP" -in "$WINDOW_DECK" -var R settle_friction.restart -var tol "$2" \
      -var n "$WINDOW" -log "$log" -echo none > /dev/null)
-  awk -v c="$1" -v l="$(load)" '/^ *Step/{f=1; first=1; next} /^Loop/{f=0; t=$4}
-    f && NF >= 6 && $1 ~ /^[0-9]+$/ {if (first) {first = 0; next} it += $3; k++; s = $1; a = $4}
-    END{printf "%s,%d,%.1f,%d,%.3f,%s\n", c, s, it / k, a, t, l}' "$log" >> "$CSV"
+  bench_thermo "$log" last:Step mean:f_hc[1] last:f_hc[4] loop load | sed "s/^/$1,/" >> "$CSV"
 }
 echo "friction_deep: settle, friction 0.5 ($NZ layers, $SETTLE steps)"
 settle settle_friction apgd "friction 0.5"

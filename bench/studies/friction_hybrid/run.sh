@@ -7,13 +7,10 @@
 # HARDCONTACT_LMP: the launcher (default build/lmp_hardcontact, any build from the commit that
 # added solver hybrid).
 set -euo pipefail
-ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/../../.." && pwd)"
-PY=/usr/bin/python3; [ -x "$PY" ] || PY=python3
-LMP="${HARDCONTACT_LMP:-$ROOT/build/lmp_hardcontact}"
+# shellcheck source=../../common.sh
+source "$(dirname "${BASH_SOURCE[0]}")/../../common.sh" friction_hybrid_ "$@"
 export HARDCONTACT_LMP="$LMP" OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
-WORK="${BENCH_WORKDIR:-$ROOT/bench/work}/friction_hybrid"
-RES="$ROOT/bench/studies/friction_hybrid/results"
-mkdir -p "$WORK" "$RES"
+RES="$RESULTS"
 echo "# $(date -u +%F) $(uname -n) $(nproc) cores, load $(cut -d' ' -f1-3 /proc/loadavg); $(git -C "$ROOT" rev-parse --short HEAD)" > "$RES/friction_hybrid.csv"
 echo "case,solver,tol,loop_s,it_mean,it_rest_mean,it_rest_max,maxiter_stops,ke_rel_rest_per_sphere" >> "$RES/friction_hybrid.csv"
 for tol in 1e-2 1e-4; do
@@ -39,7 +36,7 @@ for s in apgd hybrid; do
 done
 wait
 for s in apgd hybrid; do
-  loop=$(awk '/^Loop time/{print $4}' "$WORK/heap_$s/log.lammps")
+  loop=$(bench_thermo "$WORK/heap_$s/log.lammps" loop)
   angle=$("$PY" -c "import sys; sys.path.insert(0, '$ROOT/examples/heap'); import heap_angle as h; r = h.heap_angle('$WORK/heap_$s/heap.dump', floor=1.0); print('cone %.2f deg, flank %.2f deg' % (r['cone_angle'], r['angle']))")
   echo "heap $s: loop $loop s, $angle" >> "$out"
 done

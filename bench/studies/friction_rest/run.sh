@@ -27,15 +27,11 @@ OLD_LMP="${OLD_LMP:-}"
 MID_LMP="${MID_LMP:-}"
 CSV="$RESULTS/friction_rest.csv"
 echo "scene,build,steps,it_mean,it_max,maxiter_stops,overlap_max,loop_s,load1" > "$CSV"
-load() { cut -d' ' -f1 /proc/loadavg; }
 # summary LOG SCENE BUILD ITCOL STOPCOL OVCOL: the last thermo block of LOG (its first line is
-# the state before the window and is skipped)
+# the state before the window and is skipped): rows, mean and largest iterations, maxiter stops,
+# largest overlap, loop time, load
 summary() {
-  awk -v s="$2" -v b="$3" -v ic="$4" -v sc="$5" -v oc="$6" -v l="$(load)" '
-    /^ *Step/{f=1; first=1; n=0; it=0; mx=0; ov=0; next} /^Loop/{f=0; t=$4}
-    f && $1 ~ /^[0-9]+$/ {if (first) {first=0; s0=$sc; next} n++; it+=$ic; if ($ic>mx) mx=$ic;
-                          if ($oc>ov) ov=$oc; st=$sc-s0}
-    END{printf "%s,%s,%d,%.1f,%d,%d,%.3g,%.3f,%s\n", s, b, n, it/n, mx, st, ov, t, l}' "$1" >> "$CSV"
+  bench_thermo "$1" rows "mean:$4" "max:$4" "delta:$5" "max:$6" loop load | sed "s/^/$2,$3,/" >> "$CSV"
 }
 builds=("new:$LMP")
 [ -n "$MID_LMP" ] && builds+=("mid:$MID_LMP")
@@ -51,7 +47,7 @@ for b in "${builds[@]}"; do
      -var zfill 0.8 -var tset 3.0 -var froude 0.01 -var thermo_dt 0.5 -var dump_dt 1.0 \
      -var tol 1e-4 -var nrev "$NREV" -log log.lammps -echo none > /dev/null)
   # the drum's thermo samples every 0.5 time units: iterations per step there, stops exact
-  summary "$WORK/drum_$name/log.lammps" drum "$name" 9 13 12
+  summary "$WORK/drum_$name/log.lammps" drum "$name" f_hc[1] f_hc[6] f_hc[7]
 done
 
 # pile and tray: a state from LMP, then the windows
@@ -84,7 +80,7 @@ for b in "${builds[@]}"; do
     if [ $scene != tray ]; then w="$PILE_WALLS"; else w="$TRAY_WALLS"; fi
     (cd "$WORK" && "$lmp" -in in.window -var R "$scene.restart" -var walls "$w" -var n "$WINDOW" \
        -log "log.${scene}_$name" -echo none > /dev/null)
-    summary "$WORK/log.${scene}_$name" "$scene" "$name" 3 7 8
+    summary "$WORK/log.${scene}_$name" "$scene" "$name" f_hc[1] f_hc[6] f_hc[7]
   done
 done
 {

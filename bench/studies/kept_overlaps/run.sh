@@ -34,15 +34,11 @@ NAME="${KEPT_OVERLAPS_NAME:-kept_overlaps}"
 CSV="$RESULTS/$NAME.csv"
 [ "$MODE" = quick ] && CSV="$WORK/$NAME.csv"
 echo "scene,build,round,steps,it_mean,it_second_half,it_max,undone,overlap_rel_max,loop_s,load1" > "$CSV"
-# row LOG SCENE BUILD ROUND LOAD: thermo columns step ke f_hc[1] f_hc[7] f_hc[12] of the last
-# block of LOG, its first line (the state before the run) skipped
+# row LOG SCENE BUILD ROUND LOAD UNDONE: thermo columns step ke f_hc[1] f_hc[7] UNDONE of the
+# last block of LOG, its first line (the state before the run) skipped
 row() {
-  awk -v s="$2" -v b="$3" -v r="$4" -v l="$5" '
-    /^ *Step/{f=1; first=1; n=0; next} /^Loop/{f=0; t=$4}
-    f && $1 ~ /^[0-9]+$/ {if (first) {first=0; next} n++; it[n]=$3; ov=($4>ov)?$4:ov; u=$5}
-    END{s1=0; s2=0; m=0; for (i=1;i<=n;i++) {s1+=it[i]; if (i>n/2) s2+=it[i]; if (it[i]>m) m=it[i]}
-        printf "%s,%s,%d,%d,%.2f,%.2f,%d,%s,%.3g,%.3f,%s\n", s, b, r, n, s1/n, s2/(n-int(n/2)),
-               m, u, ov, t, l}' "$1" >> "$CSV"
+  bench_thermo "$1" rows mean:f_hc[1] half:f_hc[1] max:f_hc[1] "last:$6" max:f_hc[7] loop \
+    | sed "s/^/$2,$3,$4,/; s/\$/,$5/" >> "$CSV"
 }
 THERMO='s/^thermo_style .*/thermo_style    custom step ke f_hc[1] f_hc[7] ${undone}/'
 TRAY_WALLS=$(bench_tray_1000 "$WORK/tray_m1000.data")
@@ -71,9 +67,8 @@ for nz in $LAYERS; do
      -var n $((200 + 20 * nz)) -var W "settled$nz.restart" -log "log.settle_state$nz" -echo none > /dev/null)
   (cd "$WORK" && "$REF" -in in.calm -var R "settled$nz.restart" -var extra "" -var walls "$PILE_WALLS" \
      -var n "$CALM" -var cap "$CALM_CAP" -var W "rest$nz.restart" -log "log.calm_state$nz" -echo none > /dev/null)
-  grep -B1 -m1 "^Loop" "$WORK/log.calm_state$nz" | head -1 | awk -v nz="$nz" \
-    '{printf "state: %s layers at step %s, kinetic energy per sphere %s m g d\n", nz, $1, $4}' \
-    | tee -a "$WORK/states.txt"
+  IFS=, read -r step calm < <(bench_thermo "$WORK/log.calm_state$nz" last:Step last:v_calm)
+  echo "state: $nz layers at step $step, kinetic energy per sphere $calm m g d" | tee -a "$WORK/states.txt"
 done
 (cd "$WORK" && "$REF" -in in.tray_settle -var walls "$TRAY_WALLS" -log log.tray_state \
    -echo none > /dev/null)
@@ -82,7 +77,7 @@ run_window() {    # LMP BUILD ROUND SCENE RESTART WALLS STEPS
   local l; l=$(bench_load1)
   (cd "$WORK" && "$1" -in in.window -var R "$5" -var extra "" -var walls "$6" -var n "$7" -var undone "$undone" \
      -log "log.$4_$2_$3" -echo none > /dev/null)
-  row "$WORK/log.$4_$2_$3" "$4" "$2" "$3" "$l"
+  row "$WORK/log.$4_$2_$3" "$4" "$2" "$3" "$l" "$undone"
 }
 for r in $(seq 1 "$ROUNDS"); do
   for build in ref new; do
@@ -96,7 +91,7 @@ for r in $(seq 1 "$ROUNDS"); do
     l=$(bench_load1)
     (cd "$WORK" && "$lmp" -in in.pile -var solver cg -var extra "" -var nz 20 -var n "$SETTLE" -var undone "$undone" \
        -var W "settle_${build}_$r.restart" -log "log.settle_${build}_$r" -echo none > /dev/null)
-    row "$WORK/log.settle_${build}_$r" settle "$build" "$r" "$l"
+    row "$WORK/log.settle_${build}_$r" settle "$build" "$r" "$l" "$undone"
   done
 done
 {

@@ -5,14 +5,14 @@
 # with friction 0.5. One process, one run at a time. About 2 minutes. Results:
 # bench/studies/mesh_walls/results/mesh_walls.csv; the table goes into bench/studies/mesh_walls/README.md.
 # HARDCONTACT_LMP: the launcher (default build/lmp_hardcontact; any build with `wall stl`).
+#   bench/studies/mesh_walls/run.sh [--quick]     (--quick: 30 steps, into results-quick/)
 set -euo pipefail
 HERE="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
-ROOT="$(cd "$HERE/../../.." && pwd)"
-PY=/usr/bin/python3; [ -x "$PY" ] || PY=python3
-LMP="${HARDCONTACT_LMP:-$ROOT/build/lmp_hardcontact}"
-WORK="${BENCH_WORKDIR:-$ROOT/bench/work}/mesh_walls"
-RES="$ROOT/bench/studies/mesh_walls/results/mesh_walls.csv"
-mkdir -p "$WORK" "$(dirname "$RES")"
+# shellcheck source=../../common.sh
+source "$HERE/../../common.sh" mesh_walls_ "$@"
+STEPS=150
+[ "$MODE" = quick ] && STEPS=30
+RES="$RESULTS/mesh_walls.csv"
 sed -e 's/hardcontact solver ${solver} wall xplane 0 11 wall yplane 0 11 wall zplane 0 NULL/hardcontact ${extra} ${walls}/' \
   -e "s/^pair_style .*/region          walls block 0 11 0 11 0 100 side in units box\n&/" "$ROOT/bench/compare/in.pile3d" > "$WORK/in.pile"
 declare -A TRIS
@@ -23,14 +23,11 @@ for cell in 40 1 0.5 0.2; do TRIS[$cell]=$("$PY" "$HERE/make_box.py" "$cell" "$W
 } > "$RES"
 run() {    # run NAME TRIANGLES LAW WALLS EXTRA
   local log="$WORK/log.$1.$3"
-  (cd "$WORK" && "$LMP" -in in.pile -var nz 10 -var n 150 -var walls "$4" -var extra "$5" \
+  (cd "$WORK" && "$LMP" -in in.pile -var nz 10 -var n "$STEPS" -var walls "$4" -var extra "$5" \
      -log "$log" -echo none -screen none)
-  awk -v w="$1" -v nt="$2" -v law="$3" -v load="$(cut -d' ' -f1 /proc/loadavg)" '
-    /^ *Step/{f=1; next} /^Loop/{f=0; loop=$4}
-    f && NF >= 9 {it += $4; k++; ke = $3}
-    /^Modify/{mod=$5}
-    END{printf "%s,%s,%s,%.3f,%.3f,%.1f,%.10g,%s\n", w, nt, law, loop, mod, it / k, ke, load}' \
-    "$log" >> "$RES"
+  # every thermo row, the first (step 0: no solve) too
+  bench_thermo --keep-first "$log" loop time:Modify mean:f_hc[1] last:KinEng load \
+    | sed "s/^/$1,$2,$3,/" >> "$RES"
 }
 for law in frictionless friction; do
   extra=""; [ $law = friction ] && extra="friction 0.5"

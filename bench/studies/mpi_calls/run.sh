@@ -48,19 +48,14 @@ for r in $(seq 1 "$ROUNDS"); do
            -x LD_PRELOAD="$WORK/libcount_mpi_calls.so" -x MPI_CALL_COUNTS "$lmp" -in in.pile \
            -var solver "$solver" -var extra "$extra" -var nz "$nz" -var n "$steps" \
            -log "log.$tag" -echo none > /dev/null)
-        # iterations: thermo column 3 summed over the steps (the first line, step 0, has
-        # none); calls: rank 0's line (every process takes part in each reduction)
-        awk -v s="$sname" -v name="$name" -v np="$np" -v r="$r" -v load="$load" \
-            -v counts="$WORK/counts.$tag" '
-          /^ *Step/{f=1; first=1; next} /^Loop/{f=0; t=$4}
-          f && $1 ~ /^[0-9]+$/ {if (first) {first=0; next} n++; it+=$3}
-          END{
-            while ((getline line < counts) > 0) {
-              split(line, a, " "); if (a[2] != "0") continue
-              red = a[4]; msg = a[6] + a[8] + a[14]
-            }
-            printf "%s,%s,%d,%d,%d,%d,%d,%d,%.3f,%.3f,%.3f,%s\n", s, name, np, r, n, it, red, msg,
-                   red / it, msg / it, t, load }' "$WORK/log.$tag" >> "$CSV"
+        # iterations summed over the steps (the first line, step 0, has none); calls: rank 0's
+        # line (every process takes part in each reduction)
+        IFS=, read -r n it t < <(bench_thermo "$WORK/log.$tag" rows sum:f_hc[1] loop)
+        read -r red msg < <(awk '$2 == "0" {print $4, $6 + $8 + $14}' "$WORK/counts.$tag" | tail -1)
+        awk -v s="$sname" -v name="$name" -v np="$np" -v r="$r" -v load="$load" -v n="$n" \
+            -v it="$it" -v t="$t" -v red="$red" -v msg="$msg" 'BEGIN{
+          printf "%s,%s,%d,%d,%d,%d,%d,%d,%.3f,%.3f,%.3f,%s\n", s, name, np, r, n, it, red, msg,
+                 red / it, msg / it, t, load }' >> "$CSV"
         tail -1 "$CSV"
       done
     done

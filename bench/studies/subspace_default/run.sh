@@ -20,13 +20,10 @@ ROUNDS=5; SETTLE=300; REST=2000; WINDOW=200; TRAY_WINDOW=500; NZ=20
 CSV="$RESULTS/subspace_default.csv"
 [ "$MODE" = quick ] && CSV="$WORK/subspace_default.csv"
 echo "scene,start,round,steps,it_mean,loop_s,load1" > "$CSV"
-# row LOG SCENE START ROUND LOAD: iterations (thermo column 3) of the last thermo block of LOG,
-# its first line (the state before the run) skipped, and its loop time
+# row LOG SCENE START ROUND LOAD: the mean iterations of the last thermo block of LOG, its first
+# line (the state before the run) skipped, and its loop time
 row() {
-  awk -v s="$2" -v st="$3" -v r="$4" -v l="$5" '
-    /^ *Step/{f=1; first=1; n=0; it=0; next} /^Loop/{f=0; t=$4}
-    f && $1 ~ /^[0-9]+$/ {if (first) {first=0; next} n++; it+=$3}
-    END{printf "%s,%s,%d,%d,%.2f,%.3f,%s\n", s, st, r, n, it/n, t, l}' "$1" >> "$CSV"
+  bench_thermo "$1" rows mean:f_hc[1] loop | sed "s/^/$2,$3,$4,/; s/\$/,$5/" >> "$CSV"
 }
 TRAY_WALLS=$(bench_tray_1000 "$WORK/tray_m1000.data")
 bench_pile_deck "$WORK/in.pile" 's/^thermo_style .*/thermo_style    custom step ke f_hc[1] f_hc[3] f_hc[4]/'
