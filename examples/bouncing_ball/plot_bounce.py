@@ -2,26 +2,16 @@
 """Heights of the two balls of in.bounce against time, with the apexes e^(2k) H the restitution
 law predicts, from a log.lammps; prints the measured apexes against them.
     plot_bounce.py log.lammps out.png E"""
+import os
 import sys
 
 import matplotlib
 matplotlib.use("Agg")
-import matplotlib.pyplot as plt
-import numpy as np
+import matplotlib.pyplot as plt  # noqa: E402
+import numpy as np  # noqa: E402
 
-
-def thermo(path):
-    """The last thermo block of a log: column name -> values."""
-    rows, cols, reading = [], None, False
-    for line in open(path):
-        w = line.split()
-        if w and w[0] == "Step":
-            cols, rows, reading = w, [], True
-        elif w and w[0] == "Loop":
-            reading = False
-        elif reading and len(w) == len(cols):
-            rows.append([float(v) for v in w])
-    return {c: np.array(v) for c, v in zip(cols, zip(*rows))}
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "python"))
+import hctools as hc  # noqa: E402
 
 
 def apexes(z):
@@ -31,7 +21,7 @@ def apexes(z):
 
 def main():
     log, png, e = sys.argv[1], sys.argv[2], float(sys.argv[3])
-    t = thermo(log)
+    t = hc.read_thermo(log)[-1]
     time, z1, z2, floor = t["Time"], t["v_z1"], t["v_z2"], t["v_floor"]
     H = z1[0]
     print("ball on the still floor: apex k, measured height, e^(2k) H")

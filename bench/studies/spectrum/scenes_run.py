@@ -3,14 +3,14 @@ solver (cg, tol 1e-4, warm start) from bench/perf's data, writes a restart, then
 at rest with HARDCONTACT_DUMP_PROBLEMS set, so that every step's problem is written."""
 
 import argparse
-import os
-import subprocess
 import sys
 from pathlib import Path
 
 HERE = Path(__file__).resolve().parent
-sys.path.insert(0, str(HERE.parent / "perf"))
+sys.path.insert(0, str(HERE.parents[1] / "perf"))    # bench/perf: scenes, decks
+sys.path.insert(0, str(HERE.parents[2] / "python"))
 import decks  # noqa: E402
+import hctools as hc  # noqa: E402
 import scenes  # noqa: E402
 
 # name: (scene, settle steps); the piles settle as in bench/perf (200 + 20 x layers steps)
@@ -35,16 +35,13 @@ def main():
         data = d / "scene.data"
         scenes.write(sc, str(data))
         restart = d / "settled.restart"
-        (d / "in.settle").write_text(decks.hard(sc, ("data", str(data)), "cg", 1e-4,
-                                                [(settle, 50, 600.0)]) +
-                                     "write_restart   %s\n" % restart)
-        subprocess.run([a.lmp, "-in", "in.settle", "-log", "log.settle", "-echo", "none"],
-                       cwd=d, check=True, stdout=subprocess.DEVNULL)
-        (d / "in.rest").write_text(decks.hard(sc, ("restart", str(restart)), "cg", 1e-4,
-                                              [(a.window, 1, 600.0)]))
-        env = dict(os.environ, HARDCONTACT_DUMP_PROBLEMS=str(d / "problem"))
-        subprocess.run([a.lmp, "-in", "in.rest", "-log", "log.rest", "-echo", "none"],
-                       cwd=d, check=True, stdout=subprocess.DEVNULL, env=env)
+        deck = decks.hard(sc, ("data", str(data)), "cg", 1e-4, [(settle, 50, 600.0)])
+        hc.run_deck(a.lmp, deck + "write_restart   %s\n" % restart, workdir=d, timeout=7200,
+                    deck_name="in.settle", log_name="log.settle", args=["-echo", "none"])
+        hc.run_deck(a.lmp, decks.hard(sc, ("restart", str(restart)), "cg", 1e-4,
+                                      [(a.window, 1, 600.0)]),
+                    workdir=d, timeout=7200, deck_name="in.rest", log_name="log.rest",
+                    args=["-echo", "none"], env=dict(HARDCONTACT_DUMP_PROBLEMS=str(d / "problem")))
         print("%s: settled %d steps, %d problems dumped" % (
             name, settle, len(list(d.glob("problem.*")))), flush=True)
 
