@@ -5,6 +5,7 @@
 #include "contact_problem.h"
 #include "distributed_ops.h"
 #include "container_bytes.h"
+#include "laws/law_list.h"    // ContactLaw
 
 #include <memory>
 #include <string>
@@ -65,10 +66,6 @@ class Solver {
   virtual void load_state(const double *) {}
 };
 
-// The law of every row: the paper's (laws/normal.h, 1 multiplier per row), Coulomb friction
-// (laws/coulomb.h, mu[3 c..] = normal, tangent1, tangent2) or with rolling resistance too
-// (laws/rolling.h, 5 per row: then rolling1, rolling2).
-enum class ContactLaw { Normal, Coulomb, Rolling };
 // nullptr for an unknown name, or for a solver without the law.
 std::unique_ptr<Solver> make_solver(const std::string &name,
                                     ContactLaw law = ContactLaw::Normal);

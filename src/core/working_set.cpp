@@ -1,7 +1,6 @@
 #include "working_set.h"
 
-#include "laws/coulomb.h"
-#include "laws/rolling.h"
+#include "laws/law_list.h"
 
 namespace hardcontact {
 
@@ -52,8 +51,6 @@ typename WorkingSet<Law>::Verdict WorkingSet<Law>::check(int k, double residual,
   return energy_within_bound(p, mu, u, ops, Law::block) ? Verdict::Converged : Verdict::Iterate;
 }
 
-template class WorkingSet<NormalLaw>;
-template class WorkingSet<CoulombLaw>;
-template class WorkingSet<RollingLaw>;
+HARDCONTACT_INSTANTIATE_FOR_LAWS(WorkingSet)
 
 }    // namespace hardcontact

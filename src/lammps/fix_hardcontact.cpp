@@ -93,9 +93,7 @@ std::vector<hardcontact::MeshWallSource::Spec> mesh_specs(const hardcontact::Fix
 // rolling five)
 int history_values(const hardcontact::FixOptions &o)
 {
-  return o.has_rolling()    ? hardcontact::RollingLaw::block
-         : o.has_friction() ? hardcontact::CoulombLaw::block
-                            : hardcontact::NormalLaw::block;
+  return hardcontact::law_block(o.contact_law());
 }
 
 }    // namespace

@@ -302,8 +302,6 @@ bool ApgdSolver<Law>::step(const SolverSettings &, std::vector<double> &mu, std:
   return true;
 }
 
-template class ApgdSolver<NormalLaw>;
-template class ApgdSolver<CoulombLaw>;
-template class ApgdSolver<RollingLaw>;
+HARDCONTACT_INSTANTIATE_FOR_LAWS(ApgdSolver)
 
 }    // namespace hardcontact

@@ -4,6 +4,7 @@
 // sqrt(cond) iterations instead of cond for Uzawa.
 #pragma once
 
+#include "../laws/law_list.h"
 #include "../laws/coulomb.h"
 #include "../laws/normal.h"
 #include "../laws/rolling.h"
@@ -70,8 +71,6 @@ class ApgdSolver : public IterativeSolver<Law> {
   std::vector<Vec3> scratch_u_;
 };
 
-using Apgd = ApgdSolver<NormalLaw>;
-using ApgdFriction = ApgdSolver<CoulombLaw>;
-using ApgdRolling = ApgdSolver<RollingLaw>;
+HARDCONTACT_SOLVER_ALIASES(Apgd, ApgdSolver)
 
 }    // namespace hardcontact

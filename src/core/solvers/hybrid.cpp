@@ -32,8 +32,6 @@ SolveReport HybridSolver<Law>::solve(const ContactProblem &p, const SolverSettin
   return r;
 }
 
-template class HybridSolver<NormalLaw>;
-template class HybridSolver<CoulombLaw>;
-template class HybridSolver<RollingLaw>;
+HARDCONTACT_INSTANTIATE_FOR_LAWS(HybridSolver)
 
 }    // namespace hardcontact

@@ -14,6 +14,7 @@
 // converged one tries again at once), so a flowing scene pays little for the tries.
 #pragma once
 
+#include "../laws/law_list.h"
 #include "apgd.h"
 #include "nsgs.h"
 
@@ -53,8 +54,6 @@ class HybridSolver : public Solver {
   int backoff_ = 1;    // solves to skip after the next failed try
 };
 
-using Hybrid = HybridSolver<NormalLaw>;
-using HybridFriction = HybridSolver<CoulombLaw>;
-using HybridRolling = HybridSolver<RollingLaw>;
+HARDCONTACT_SOLVER_ALIASES(Hybrid, HybridSolver)
 
 }    // namespace hardcontact

@@ -114,8 +114,6 @@ double NsgsSolver<Law>::set_residual(const std::vector<double> &mu, const std::v
   return r;
 }
 
-template class NsgsSolver<NormalLaw>;
-template class NsgsSolver<CoulombLaw>;
-template class NsgsSolver<RollingLaw>;
+HARDCONTACT_INSTANTIATE_FOR_LAWS(NsgsSolver)
 
 }    // namespace hardcontact

@@ -17,6 +17,7 @@
 // exact); the owned rows are then swept Gauss-Seidel.
 #pragma once
 
+#include "../laws/law_list.h"
 #include "../laws/coulomb.h"
 #include "../laws/normal.h"
 #include "../laws/rolling.h"
@@ -60,8 +61,6 @@ class NsgsSolver : public IterativeSolver<Law> {
   int sweeps_ = 0;
 };
 
-using Nsgs = NsgsSolver<NormalLaw>;
-using NsgsFriction = NsgsSolver<CoulombLaw>;
-using NsgsRolling = NsgsSolver<RollingLaw>;
+HARDCONTACT_SOLVER_ALIASES(Nsgs, NsgsSolver)
 
 }    // namespace hardcontact

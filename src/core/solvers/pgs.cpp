@@ -11,8 +11,6 @@ bool PgsSolver<Law>::step(const SolverSettings &, std::vector<double> &mu, std::
   return true;
 }
 
-template class PgsSolver<NormalLaw>;
-template class PgsSolver<CoulombLaw>;
-template class PgsSolver<RollingLaw>;
+HARDCONTACT_INSTANTIATE_FOR_LAWS(PgsSolver)
 
 }    // namespace hardcontact

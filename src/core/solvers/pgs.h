@@ -3,6 +3,7 @@
 // consistent under domain decomposition (a block-Jacobi split at the process boundary).
 #pragma once
 
+#include "../laws/law_list.h"
 #include "../laws/coulomb.h"
 #include "../laws/normal.h"
 #include "../laws/rolling.h"
@@ -29,8 +30,6 @@ class PgsSolver : public IterativeSolver<Law> {
   std::vector<double> dmu_;    // boundary-row steps of one sweep, kept between solves
 };
 
-using Pgs = PgsSolver<NormalLaw>;
-using PgsFriction = PgsSolver<CoulombLaw>;
-using PgsRolling = PgsSolver<RollingLaw>;
+HARDCONTACT_SOLVER_ALIASES(Pgs, PgsSolver)
 
 }    // namespace hardcontact

@@ -11,40 +11,41 @@
 namespace hardcontact {
 
 namespace {
+template <class S>
+std::unique_ptr<Solver> create()
+{
+  return std::unique_ptr<Solver>(new S());
+}
+// A solver family's constructor of each law, in ContactLaw's order (laws/law_list.h).
+#define HARDCONTACT_DETAIL_CREATE(Law, Enumerator, Suffix, Template) &create<Template<Law>>,
+#define HARDCONTACT_FAMILY(name, Template) \
+  Entry { name, { HARDCONTACT_LAWS_WITH(HARDCONTACT_DETAIL_CREATE, Template) } }
+
 struct Entry {
   const char *name;
-  std::unique_ptr<Solver> (*create)();             // the paper's law (laws/normal.h)
-  std::unique_ptr<Solver> (*create_friction)();    // Coulomb's (laws/coulomb.h); null: none
-  std::unique_ptr<Solver> (*create_rolling)();     // with rolling (laws/rolling.h); null: none
+  // per ContactLaw (laws/law_list.h); null: the solver does not solve that law
+  std::unique_ptr<Solver> (*create[kContactLaws])();
 };
 const Entry registry[] = {
-    {"uzawa", [] { return std::unique_ptr<Solver>(new Uzawa()); },
-     [] { return std::unique_ptr<Solver>(new UzawaFriction()); },
-     [] { return std::unique_ptr<Solver>(new UzawaRolling()); }},
-    {"apgd", [] { return std::unique_ptr<Solver>(new Apgd()); },
-     [] { return std::unique_ptr<Solver>(new ApgdFriction()); },
-     [] { return std::unique_ptr<Solver>(new ApgdRolling()); }},
-    {"pgs", [] { return std::unique_ptr<Solver>(new Pgs()); },
-     [] { return std::unique_ptr<Solver>(new PgsFriction()); },
-     [] { return std::unique_ptr<Solver>(new PgsRolling()); }},
-    {"nsgs", [] { return std::unique_ptr<Solver>(new Nsgs()); },
-     [] { return std::unique_ptr<Solver>(new NsgsFriction()); },
-     [] { return std::unique_ptr<Solver>(new NsgsRolling()); }},
-    {"hybrid", [] { return std::unique_ptr<Solver>(new Hybrid()); }, [] { return std::unique_ptr<Solver>(new HybridFriction()); },
-     [] { return std::unique_ptr<Solver>(new HybridRolling()); }},
-    {"cg", [] { return std::unique_ptr<Solver>(new ProjectedCg()); }, nullptr, nullptr},
-    {"exact", [] { return std::unique_ptr<Solver>(new Exact()); }, nullptr, nullptr},
+    HARDCONTACT_FAMILY("uzawa", UzawaSolver),
+    HARDCONTACT_FAMILY("apgd", ApgdSolver),
+    HARDCONTACT_FAMILY("pgs", PgsSolver),
+    HARDCONTACT_FAMILY("nsgs", NsgsSolver),
+    HARDCONTACT_FAMILY("hybrid", HybridSolver),
+    // the paper's law only
+    {"cg", {&create<ProjectedCg>}},
+    {"exact", {&create<Exact>}},
 };
+#undef HARDCONTACT_FAMILY
+#undef HARDCONTACT_DETAIL_CREATE
 }    // namespace
 
 std::unique_ptr<Solver> make_solver(const std::string &name, ContactLaw law)
 {
   for (const Entry &e : registry) {
     if (name != e.name) continue;
-    auto create = law == ContactLaw::Normal    ? e.create
-                  : law == ContactLaw::Coulomb ? e.create_friction
-                                               : e.create_rolling;
-    return create ? create() : nullptr;
+    auto make = e.create[static_cast<int>(law)];
+    return make ? make() : nullptr;
   }
   return nullptr;
 }
@@ -52,7 +53,7 @@ std::unique_ptr<Solver> make_solver(const std::string &name, ContactLaw law)
 bool solver_has_friction(const std::string &name)
 {
   for (const Entry &e : registry)
-    if (name == e.name) return e.create_friction != nullptr;
+    if (name == e.name) return e.create[static_cast<int>(ContactLaw::Coulomb)] != nullptr;
   return false;
 }
 

@@ -32,8 +32,6 @@ bool UzawaSolver<Law>::step(const SolverSettings &, std::vector<double> &mu,
   return true;
 }
 
-template class UzawaSolver<NormalLaw>;
-template class UzawaSolver<CoulombLaw>;
-template class UzawaSolver<RollingLaw>;
+HARDCONTACT_INSTANTIATE_FOR_LAWS(UzawaSolver)
 
 }    // namespace hardcontact

@@ -2,6 +2,7 @@
 // iterating on a working set of rows (Remark 7, working_set.h).
 #pragma once
 
+#include "../laws/law_list.h"
 #include "../laws/coulomb.h"
 #include "../laws/normal.h"
 #include "../laws/rolling.h"
@@ -18,8 +19,6 @@ class UzawaSolver : public IterativeSolver<Law> {
   bool step(const SolverSettings &s, std::vector<double> &mu, std::vector<Vec3> &u) override;
 };
 
-using Uzawa = UzawaSolver<NormalLaw>;
-using UzawaFriction = UzawaSolver<CoulombLaw>;
-using UzawaRolling = UzawaSolver<RollingLaw>;
+HARDCONTACT_SOLVER_ALIASES(Uzawa, UzawaSolver)
 
 }    // namespace hardcontact
