@@ -11,6 +11,7 @@
 #pragma once
 
 #include "../core/contact_problem.h"
+#include "../core/laws/law_list.h"
 
 #include "lmptype.h"
 
@@ -24,9 +25,10 @@ namespace hardcontact {
 
 class ContactHistory {
  public:
-  // block: the law's multipliers per contact (1, 3 or 5)
-  ContactHistory(LAMMPS_NS::Memory *memory, int block) :
-      memory_(memory), block_(block), k_(block == 1 ? 1 : block == 3 ? 3 : 6)
+  // law: the contact law of the rows, whose multipliers per contact (law_block) are kept as
+  // law_history values (laws/law_list.h)
+  ContactHistory(LAMMPS_NS::Memory *memory, ContactLaw law) :
+      memory_(memory), block_(law_block(law)), k_(law_history(law))
   {
   }
   ~ContactHistory();

@@ -89,13 +89,6 @@ std::vector<hardcontact::MeshWallSource::Spec> mesh_specs(const hardcontact::Fix
   return specs;
 }
 
-// per contact: the law's multipliers (normal force; with friction its three components, with
-// rolling five)
-int history_values(const hardcontact::FixOptions &o)
-{
-  return hardcontact::law_block(o.contact_law());
-}
-
 }    // namespace
 
 FixHardContact::FixHardContact(LAMMPS *lmp, int narg, char **arg) :
@@ -104,7 +97,7 @@ FixHardContact::FixHardContact(LAMMPS *lmp, int narg, char **arg) :
     walls_(lmp, groupbit, std::move(options_.walls), std::move(options_.wall_variables)),
     regions_(lmp, groupbit, std::move(options_.wall_regions)),
     meshes_(lmp, groupbit, mesh_specs(options_)), obstacles_(walls_, regions_, meshes_),
-    history_(memory, history_values(options_)),
+    history_(memory, options_.contact_law()),
     step_(lmp, groupbit, ops_, reach_, {&pairs_, &walls_, &regions_, &meshes_}),
     integrate_(lmp, groupbit),
     outputs_(lmp, this, options_.has_friction()), virial_(lmp)

@@ -20,6 +20,9 @@ namespace hardcontact {
 
 struct CoulombLaw {
   static constexpr int block = 3;
+  // values a contact keeps between steps (the contact history): the force as a box-frame
+  // vector, which survives a new tangent frame
+  static constexpr int history = 3;
 
   // Euclidean projection onto K: itself inside, 0 in the polar cone (coef |t| <= -n), else
   // onto the cone's surface along the normal of the boundary.

@@ -1,5 +1,6 @@
 // What every contact law shares. A law is the set the multipliers of one contact may take;
 // the solvers are written against this interface (templates, no virtual call per contact):
+//   history                 values a contact keeps between steps (src/lammps/contact_history.h)
 //   block                   multipliers per contact, and components of g, the gradient of the
 //                           dual: the predicted gap first, then (friction) tangential
 //                           displacements h t_k . v_slip, then (rolling) h R t_k . (w_j - w_i)

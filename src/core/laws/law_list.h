@@ -1,7 +1,8 @@
 // The contact laws, declared once. Every per-law name the code needs is generated from the list
 // below: the ContactLaw enumerators, each solver family's aliases (Apgd, ApgdFriction,
 // ApgdRolling), the explicit instantiations of the templates written against a law, the
-// solver registry's constructors and the multipliers per contact (law_block). A new law is
+// solver registry's constructors, the multipliers per contact (law_block) and the values the
+// contact history keeps (law_history). A new law is
 // its file in laws/ (law.h: the interface) and a line here.
 //
 // HARDCONTACT_LAWS_WITH(X, ...) expands X(Law, Enumerator, Suffix, ...) once per law, in the
@@ -21,6 +22,8 @@
 #define HARDCONTACT_DETAIL_COUNT(Law, Enumerator, Suffix, unused) +1
 #define HARDCONTACT_DETAIL_BLOCK(Law, Enumerator, Suffix, unused) \
   case ContactLaw::Enumerator: return Law::block;
+#define HARDCONTACT_DETAIL_HISTORY(Law, Enumerator, Suffix, unused) \
+  case ContactLaw::Enumerator: return Law::history;
 #define HARDCONTACT_DETAIL_ALIAS(Law, Enumerator, Suffix, Family, Template) \
   using Family##Suffix = Template<Law>;
 #define HARDCONTACT_DETAIL_INSTANTIATE(Law, Enumerator, Suffix, Template) template class Template<Law>;
@@ -48,6 +51,15 @@ constexpr int law_block(ContactLaw law)
     HARDCONTACT_LAWS_WITH(HARDCONTACT_DETAIL_BLOCK, ~)
   }
   return NormalLaw::block;
+}
+
+// Values a contact keeps between steps under a law (the contact history, per contact).
+constexpr int law_history(ContactLaw law)
+{
+  switch (law) {
+    HARDCONTACT_LAWS_WITH(HARDCONTACT_DETAIL_HISTORY, ~)
+  }
+  return NormalLaw::history;
 }
 
 }    // namespace hardcontact

@@ -8,6 +8,8 @@ namespace hardcontact {
 
 struct NormalLaw {
   static constexpr int block = 1;
+  // values a contact keeps between steps (the contact history): the normal force
+  static constexpr int history = 1;
 
   static double project(double mu) { return mu > 0.0 ? mu : 0.0; }
 

@@ -19,6 +19,9 @@ namespace hardcontact {
 
 struct RollingLaw {
   static constexpr int block = 5;
+  // values a contact keeps between steps (the contact history): the force and the rolling
+  // force as box-frame vectors
+  static constexpr int history = 6;
 
   // Euclidean projection onto K. For a normal value n' the two discs are independent, so the
   // projection minimises f(n') = (n' - n)^2 + (|t| - mu n')_+^2 + (|r| - mur n')_+^2 over
