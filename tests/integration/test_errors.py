@@ -27,8 +27,9 @@ from collections import namedtuple
 import lammps_run as lr
 import scene_data as sd
 
-CASE_TIMEOUT = 90.0     # seconds per LAMMPS run before it counts as a hang
-FAST = 30.0             # a failing deck of 4 atoms must stop well before that
+# seconds per LAMMPS run before it is killed and counts as a hang (a liveness bound, not a
+# timing: a failing deck of 4 atoms stops within a second or two; no test asserts a time)
+CASE_TIMEOUT = 90.0
 
 # four spheres of diameter 1 in a 6^3 box; atom 4 is alone in the far corner (last rank)
 BASE = """units           lj
@@ -508,8 +509,6 @@ def check_error_case(args, c):
                      skip_step0=c.liggghts_setup_nan and args.lmp.name == "liggghts")
     if nans:
         problems.append("'nan' in the output: %s" % nans[:3])
-    if res.seconds > FAST:
-        problems.append("took %.1f s (> %.0f s): a hang or a very slow failure" % (res.seconds, FAST))
     if not problems:
         print("ok: %s: %s" % (head, clean[0][:160]))
         if c.name == "skin_too_small":
