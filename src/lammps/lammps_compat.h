@@ -25,6 +25,8 @@
 #include "liggghts_mesh.h"       // src/liggghts/
 #endif
 
+#include "../core/mesh/surface_velocity.h"
+
 #include <cstdlib>
 #include <string>
 #include <utility>
@@ -235,6 +237,7 @@ inline void region_contact_velocity(LAMMPS_NS::Region *region, double *u_wall, d
 // ------------------------------------------------------------------------- mesh fixes
 // `wall mesh ID`: LIGGGHTS's fix mesh/surface (src/liggghts/liggghts_mesh.h). LAMMPS has no
 // triangle-mesh fix: there every call says so (a deck names its STL file with `wall stl`).
+using hardcontact::SurfaceVelocity;    // core/mesh/surface_velocity.h
 #if HARDCONTACT_LIGGGHTS
 constexpr bool kMeshFixes = true;
 using liggghts::mesh_moving;
@@ -242,7 +245,6 @@ using liggghts::mesh_mover_after;
 using liggghts::mesh_owned;
 using liggghts::mesh_surface_velocity;
 using liggghts::mesh_triangle;
-using liggghts::SurfaceVelocity;
 #else
 constexpr bool kMeshFixes = false;
 inline std::string mesh_owned(LAMMPS_NS::LAMMPS *, const std::string &, std::vector<int> &,
@@ -254,13 +256,6 @@ inline std::string mesh_owned(LAMMPS_NS::LAMMPS *, const std::string &, std::vec
 inline bool mesh_triangle(LAMMPS_NS::LAMMPS *, const std::string &, int, double *) { return false; }
 inline bool mesh_moving(LAMMPS_NS::LAMMPS *, const std::string &) { return false; }
 inline std::string mesh_mover_after(LAMMPS_NS::LAMMPS *, const std::string &, int) { return ""; }
-struct SurfaceVelocity {
-  int kind = 0;
-  double v[3] = {0.0, 0.0, 0.0};
-  double origin[3] = {0.0, 0.0, 0.0};
-  double axis[3] = {0.0, 0.0, 1.0};
-  double omega = 0.0;
-};
 inline SurfaceVelocity mesh_surface_velocity(LAMMPS_NS::LAMMPS *, const std::string &)
 {
   return {};

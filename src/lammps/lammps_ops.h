@@ -48,22 +48,8 @@ class LammpsOps : public DistributedOps {
     times_.forward_s += MPI_Wtime() - t0;
     ++times_.forwards;
   }
-  double max_all(double local) override
-  {
-    double global = 0.0;
-    const double t0 = MPI_Wtime();
-    MPI_Allreduce(&local, &global, 1, MPI_DOUBLE, MPI_MAX, world_);
-    reduced(t0);
-    return global;
-  }
-  double sum_all(double local) override
-  {
-    double global = 0.0;
-    const double t0 = MPI_Wtime();
-    MPI_Allreduce(&local, &global, 1, MPI_DOUBLE, MPI_SUM, world_);
-    reduced(t0);
-    return global;
-  }
+  double max_all(double local) override { return allreduce(local, MPI_MAX); }
+  double sum_all(double local) override { return allreduce(local, MPI_SUM); }
   void sum_all(double *values, int n) override
   {
     const double t0 = MPI_Wtime();
@@ -110,6 +96,15 @@ class LammpsOps : public DistributedOps {
   {
     times_.reduce_s += MPI_Wtime() - t0;
     ++times_.reductions;
+  }
+  // one double over every process, timed and counted
+  double allreduce(double local, MPI_Op op)
+  {
+    double global = 0.0;
+    const double t0 = MPI_Wtime();
+    MPI_Allreduce(&local, &global, 1, MPI_DOUBLE, op, world_);
+    reduced(t0);
+    return global;
   }
   // [count, sums..., maxima...] combined element by element (core/distributed_ops.h)
   static void combine(void *in, void *inout, int *len, MPI_Datatype *)

@@ -23,31 +23,13 @@ namespace hardcontact {
 namespace liggghts {
 namespace {
 
-struct FixMap {
-  using type = FixStyles *Modify::*;
-  friend type member(FixMap);
-};
-struct CutNeighMaxSq {
-  using type = double Neighbor::*;
-  friend type member(CutNeighMaxSq);
-};
-struct BinSizeFlag {
-  using type = int Neighbor::*;
-  friend type member(BinSizeFlag);
-};
-struct BinSizeUser {
-  using type = double Neighbor::*;
-  friend type member(BinSizeUser);
-};
-struct UserBinSize {
-  using type = double Atom::*;
-  friend type member(UserBinSize);
-};
+HARDCONTACT_MEMBER_TAG(FixMap, FixStyles *Modify::*)
+HARDCONTACT_MEMBER_TAG(CutNeighMaxSq, double Neighbor::*)
+HARDCONTACT_MEMBER_TAG(BinSizeFlag, int Neighbor::*)
+HARDCONTACT_MEMBER_TAG(BinSizeUser, double Neighbor::*)
+HARDCONTACT_MEMBER_TAG(UserBinSize, double Atom::*)
 
-struct ListTimeflag {
-  using type = int *Modify::*;
-  friend type member(ListTimeflag);
-};
+HARDCONTACT_MEMBER_TAG(ListTimeflag, int *Modify::*)
 
 }    // namespace
 

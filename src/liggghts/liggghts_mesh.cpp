@@ -20,30 +20,12 @@ namespace {
 // FixMeshSurface keeps its surface velocity private: reached as liggghts_members.cpp reaches
 // Modify's and Neighbor's members (an explicit instantiation names them; each type spelled
 // out, so that a LIGGGHTS that renames or retypes one stops this file from compiling).
-struct VelFlag {
-  using type = bool FixMeshSurface::*;
-  friend type member(VelFlag);
-};
-struct VSurf {
-  using type = double (FixMeshSurface::*)[3];
-  friend type member(VSurf);
-};
-struct AngVelFlag {
-  using type = bool FixMeshSurface::*;
-  friend type member(AngVelFlag);
-};
-struct Origin {
-  using type = double (FixMeshSurface::*)[3];
-  friend type member(Origin);
-};
-struct Axis {
-  using type = double (FixMeshSurface::*)[3];
-  friend type member(Axis);
-};
-struct OmegaSurf {
-  using type = double FixMeshSurface::*;
-  friend type member(OmegaSurf);
-};
+HARDCONTACT_MEMBER_TAG(VelFlag, bool FixMeshSurface::*)
+HARDCONTACT_MEMBER_TAG(VSurf, double (FixMeshSurface::*)[3])
+HARDCONTACT_MEMBER_TAG(AngVelFlag, bool FixMeshSurface::*)
+HARDCONTACT_MEMBER_TAG(Origin, double (FixMeshSurface::*)[3])
+HARDCONTACT_MEMBER_TAG(Axis, double (FixMeshSurface::*)[3])
+HARDCONTACT_MEMBER_TAG(OmegaSurf, double FixMeshSurface::*)
 
 }    // namespace
 

@@ -4,6 +4,8 @@
 // with a global id; `fix move/mesh` moves the nodes in its initial_integrate.
 #pragma once
 
+#include "../core/mesh/surface_velocity.h"
+
 #include <string>
 #include <vector>
 
@@ -24,16 +26,8 @@ bool mesh_triangle(LAMMPS_NS::LAMMPS *lmp, const std::string &id, int gid, doubl
 // the deck (its ID), "" if none: the fix must see the mesh already moved to the step's end.
 bool mesh_moving(LAMMPS_NS::LAMMPS *lmp, const std::string &id);
 std::string mesh_mover_after(LAMMPS_NS::LAMMPS *lmp, const std::string &id, int after_index);
-// The mesh's surface velocity (fix mesh/surface ... surface_vel vx vy vz, or surface_ang_vel
-// origin ox oy oz axis ax ay az omega w), as the fix holds it now (variables evaluated by
-// LIGGGHTS): kind 0 none, 1 linear (v), 2 angular (omega about the axis through origin).
-struct SurfaceVelocity {
-  int kind = 0;
-  double v[3] = {0.0, 0.0, 0.0};
-  double origin[3] = {0.0, 0.0, 0.0};
-  double axis[3] = {0.0, 0.0, 1.0};
-  double omega = 0.0;
-};
+// The mesh's surface velocity (core/mesh/surface_velocity.h) as the fix holds it now
+// (variables evaluated by LIGGGHTS).
 SurfaceVelocity mesh_surface_velocity(LAMMPS_NS::LAMMPS *lmp, const std::string &id);
 
 }    // namespace liggghts
