@@ -328,11 +328,12 @@ def main():
                                 v = velocities(fr[-1].columns)
                                 err = np.linalg.norm(v - exact_v, axis=1)
                                 pth = hc.parse_thermo(ptext)[-1]
+                                ptm = hc.loop_times(ptext)[-1]
                                 row.update(vel_err=float(err.max()) / info["vscale"],
                                            vel_err_rms=float(np.sqrt((err ** 2).mean())) / info["vscale"],
                                            probe_iter=int(pth["f_hc[1]"][-1]),
-                                           probe_t=hc.loop_times(ptext)[-1].get("Modify", float("nan")),
-                                           probe_t_cpu=hc.loop_times(ptext)[-1].get("Modify", float("nan")) * min(hc.loop_times(ptext)[-1].get("cpu_frac", float("nan")), 1.0))
+                                           probe_t=ptm.get("Modify", float("nan")),
+                                           probe_t_cpu=ptm.get("Modify", float("nan")) * min(ptm.get("cpu_frac", float("nan")), 1.0))
                             except Exception as e:  # noqa: BLE001
                                 R.say("  probe %s failed: %s" % (tag, str(e)[:200]))
                         matrix_rows.append(row)

@@ -17,7 +17,6 @@ namespace hardcontact {
 template <int Discs>
 struct DiscLaw {
   static_assert(Discs >= 1 && Discs <= 2, "Coefficients holds a friction and a rolling coefficient");
-  static constexpr int discs = Discs;
   static constexpr int block = 1 + 2 * Discs;
   // values a contact keeps between steps (the contact history): the force (normal and
   // tangential) and each further disc's force as box-frame vectors, which survive a new
@@ -155,7 +154,7 @@ struct DiscLaw {
 
   static double shift(const double *g, const Coefficients &k)
   {
-    double s = k.friction * norm2(g[1], g[2]);
+    double s = coefficient(k, 0) * norm2(g[1], g[2]);
     for (int q = 1; q < Discs; ++q) s += coefficient(k, q) * norm2(g[1 + 2 * q], g[2 + 2 * q]);
     return s;
   }

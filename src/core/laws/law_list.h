@@ -2,8 +2,8 @@
 // below: the ContactLaw enumerators, each solver family's aliases (Apgd, ApgdFriction,
 // ApgdRolling), the explicit instantiations of the templates written against a law, the
 // solver registry's constructors, the multipliers per contact (law_block) and the values the
-// contact history keeps (law_history). A new law is
-// its file in laws/ (law.h: the interface) and a line here.
+// contact history keeps (law_history). A new law is its file in laws/ (law.h: the interface)
+// and a line here.
 //
 // HARDCONTACT_LAWS_WITH(X, ...) expands X(Law, Enumerator, Suffix, ...) once per law, in the
 // order of ContactLaw; Suffix names the law in a solver family's alias (empty: the paper's).
@@ -44,7 +44,7 @@ enum class ContactLaw { HARDCONTACT_LAWS_WITH(HARDCONTACT_DETAIL_ENUMERATOR, ~) 
 
 constexpr int kContactLaws = 0 HARDCONTACT_LAWS_WITH(HARDCONTACT_DETAIL_COUNT, ~);
 
-// Multipliers per contact of a law (its block): what the contact history keeps per contact.
+// Multipliers per contact of a law (its block): the solvers' unknowns per row.
 constexpr int law_block(ContactLaw law)
 {
   switch (law) {

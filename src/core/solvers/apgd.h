@@ -5,9 +5,6 @@
 #pragma once
 
 #include "../laws/law_list.h"
-#include "../laws/coulomb.h"
-#include "../laws/normal.h"
-#include "../laws/rolling.h"
 #include "iterative_solver.h"
 #include "past_corrections.h"
 

@@ -4,9 +4,6 @@
 #pragma once
 
 #include "../laws/law_list.h"
-#include "../laws/coulomb.h"
-#include "../laws/normal.h"
-#include "../laws/rolling.h"
 #include "block_sweep.h"
 #include "iterative_solver.h"
 
