@@ -124,10 +124,18 @@ def main():
     if a.scene == "settle20":
         grid = [("apgd", 1e-2, 0.02), ("apgd", 1e-2, 0.04), ("hybrid", 1e-2, 0.02),
                 ("hybrid", 1e-3, 0.02), ("hybrid", 1e-4, 0.02)]
-    for solver, tol, h in grid:
-        rid = "%s_tol%g_h%g" % (solver, tol, h)
-        runs.append((rid, "hard", hard_deck(scene, str(data), solver, tol, h, T),
-                     dict(solver=solver, tol=tol, h=h)))
+    # the cone (SolverSettings::Cone): the default (lagged) above; exact (De Saxce's fixed point
+    # in every solve, the default before 2026-12-06) and convex (no shift) at the default tol
+    cones = [("hybrid", 1e-2, 0.02, "exact"), ("apgd", 1e-2, 0.02, "convex"),
+             ("hybrid", 1e-2, 0.04, "convex")]
+    if not a.quick and a.scene == "settle10":
+        cones += [("hybrid", 1e-3, 0.02, "exact"), ("apgd", 1e-3, 0.02, "convex")]
+    grid = [g + ("",) for g in grid] + cones
+    for solver, tol, h, cone in grid:
+        rid = "%s_tol%g_h%g%s" % (solver, tol, h, "_" + cone if cone else "")
+        extra = "cone " + cone if cone else ""
+        runs.append((rid, "hard", hard_deck(scene, str(data), solver, tol, h, T, extra),
+                     dict(solver=solver + ("/" + cone if cone else ""), tol=tol, h=h)))
     for ov in (1e-2, 1e-3):
         # hertz_params sets the static overlap of a pair under a column's load relative to d;
         # the deepest contact is the floor's, relative to its size r: d/2 per unit

@@ -20,6 +20,18 @@ struct SolverSettings {
   // cg: how many past corrections (answer - warm start) span the subspace its start is
   // improved in (projected_cg.h); 0 = the warm start as it is.
   int subspace = 0;
+  // Friction: how a solve treats De Saxce's shift of the normal target (laws/disc_law.h), the
+  // one thing that makes Coulomb's law nonconvex (iterative_solver.h, where each is measured):
+  //   Lagged (the default): the shift starts at its value at the warm start and only goes down
+  //     within the solve. Coulomb's law wherever a contact slides no faster than the warm start
+  //     predicted (a steady slide, a slide slowing down, every sticking contact); where its slip
+  //     grew within the step a sliding contact may lift off by at most mu times that growth.
+  //     Never an overlap.
+  //   Exact: the shifts are brought to their fixed point in every solve: Coulomb's law itself.
+  //   Convex: no shift, Anitescu and Tasora's convex relaxation (the cone complementarity
+  //     problem): a sliding contact lifts off at mu |slip| in every step.
+  enum class Cone { Lagged, Exact, Convex };
+  Cone cone = Cone::Lagged;
   // Developers: when set, an iterative solver of the frictionless law writes the problem it
   // receives to this file before it starts (problem_dump.h); empty = nothing written.
   std::string dump_problem;

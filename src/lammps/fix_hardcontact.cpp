@@ -56,6 +56,9 @@ hardcontact::FixOptions checked_options(LAMMPS *lmp, int narg, char **arg)
                                      "default with friction), apgd, nsgs, pgs or uzawa",
                                      o.solver_name);
   }
+  if (o.cone_given && !o.has_friction())
+    lmp->error->all(FLERR, "Fix hardcontact cone applies with friction only (it is the "
+                           "Coulomb cone's treatment): remove cone or add friction");
   if (o.settings.subspace > 0 && o.has_friction())
     lmp->error->all(FLERR, "Fix hardcontact subspace applies without friction only (with "
                            "friction its start leaves the cone): remove subspace or friction");

@@ -124,6 +124,21 @@ void parse_warmstart(LAMMPS *lmp, char **values, int, FixOptions &o)
   o.warmstart = value == "yes";
 }
 
+void parse_cone(LAMMPS *lmp, char **values, int, FixOptions &o)
+{
+  const std::string value = values[0];
+  using Cone = SolverSettings::Cone;
+  if (value == "lagged") o.settings.cone = Cone::Lagged;
+  else if (value == "exact") o.settings.cone = Cone::Exact;
+  else if (value == "convex") o.settings.cone = Cone::Convex;
+  else
+    compat::error_all(lmp->error, FLERR,
+                      "Fix hardcontact cone must be lagged (the default), exact or convex, got "
+                      "'{}'",
+                      value);
+  o.cone_given = true;
+}
+
 void parse_wall(LAMMPS *lmp, char **values, int n, FixOptions &o)
 {
   const std::string plane = values[0];
@@ -386,6 +401,10 @@ const Keyword keywords[] = {
     {"friction", 1, 2, parse_friction,
      "friction mu [I J]: Coulomb friction coefficient >= 0 for type pairs I J (all: default); "
      "walls use the value of the atom's type with itself"},
+    {"cone", 1, 0, parse_cone,
+     "cone lagged|exact|convex: friction's cone, De Saxce's shift from the warm start and only "
+     "lowered (lagged, the default), brought to its fixed point in every solve (exact), or none "
+     "(convex: Anitescu and Tasora's relaxation, sliding contacts lift off at mu |slip|)"},
     {"rolling", 1, 2, parse_rolling,
      "rolling mur [I J]: rolling resistance >= 0 (torque at most mur R F_n) for type pairs I J "
      "(all: default)"},

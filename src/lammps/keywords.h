@@ -27,6 +27,8 @@ struct FixOptions {
   // their scatter over seeds, for 7-15 x less time), the other laws SolverSettings' 1e-4
   bool tol_given = false;
   static constexpr double kFrictionTol = 1.0e-2;
+  // whether `cone` was given (settings.cone): it applies with friction only
+  bool cone_given = false;
   std::vector<PlaneWall> walls;
   std::vector<std::string> wall_variables;    // per wall: equal-style variable name, or ""
   std::vector<std::string> wall_regions;      // IDs of regions whose surfaces are walls

@@ -196,6 +196,11 @@ CASES = [
          np4=True),
     case("subspace_uzawa", deck("solver uzawa subspace 10"),
          ["subspace applies to solvers cg and apgd", "not uzawa"]),
+    # cone
+    case("cone_unknown", deck("friction 0.5 cone coulomb"),
+         ["cone must be lagged (the default), exact or convex", "'coulomb'"]),
+    case("cone_no_friction", deck("cone convex"),
+         ["cone applies with friction only", "remove cone or add friction"], np4=True),
     case("subspace_friction", deck("friction 0.5 subspace 10"),
          ["subspace applies without friction only", "remove subspace or friction"], np4=True),
     # rho

@@ -32,6 +32,8 @@ mechanics gives, at the rank count ctest gives (np 1/2/4):
    sticks (the contact points leave with no relative tangential velocity), above it slides
    (tangential impulse = mu x normal impulse, read from the local dump); momentum exact and
    angular momentum about the origin exact (sum m x cross v + I omega) at every step.
+   `cone`: one step of that launch leaves the floor at the convex relaxation's mu |slip|
+   with `cone convex`, and not at all with `cone exact` or the default `lagged` (cones()).
 4. `friction 0`: the same dump as no keyword, to the last bit.
 5. A gas of 216 spinning spheres (no walls, no gravity, boundary f) converging on itself:
    kinetic energy (translational + rotational) never increases, linear and angular momentum
@@ -207,6 +209,29 @@ def launched(args):
              % (tstar, 5.0 / 7.0 * v0, err_slide, err_roll, err_w))
     check_dissipation("launch", th, 0.0)
     check_height("launch", th)
+
+
+def cones(args):
+    """`cone`: one step of a sphere launched at v0 = 2 with no spin on a floor (mu = 0.3, from
+    rest on it: gap 0). Coulomb's law (`cone exact`, and the default `lagged`: the contact is
+    new, its shift goes to the fixed point): no lift-off, v = v0 - mu g h. The convex
+    relaxation (`cone convex`): the contact slides on the cone's edge with a normal velocity
+    mu times its slip, so with x the normal impulse per unit mass, -g h + x = mu (v0 - 7/2 mu x)
+    (the slip loses mu x and the spin's r 5/2 mu x): x = (mu v0 + g h) / (1 + 7/2 mu^2), and the
+    sphere leaves the floor at mu (v0 - 7/2 mu x) = 0.454 - the artefact De Saxce's shift
+    removes."""
+    mu, v0, g = 0.3, 2.0, 1.0
+    x = (mu * v0 + g * H) / (1.0 + 3.5 * mu * mu)
+    want = {"exact": (v0 - mu * g * H, 0.0), "lagged": (v0 - mu * g * H, 0.0),
+            "convex": (v0 - mu * x, mu * (v0 - 3.5 * mu * x))}
+    for cone, (vx, vz) in want.items():
+        _, _, th = incline(args, "cone_" + cone, 0.0, "friction %g cone %s tol 1e-10" % (mu, cone),
+                           n=1, v0=v0, flat=True)
+        got_vx = float(th["v_vx"][-1])
+        got_vz = (float(th["v_z"][-1]) - 0.5) / H    # the position moved with the new velocity
+        lr.check(abs(got_vx - vx) <= 1e-7 and abs(got_vz - vz) <= 1e-6,
+                 "cone %s: one step of a sliding sphere leaves at v_x %.9g, v_z %.9g (got %.9g, "
+                 "%.9g)" % (cone, vx, vz, got_vx, got_vz))
 
 
 DISC = lr.preamble("p f p", dimension=2, ghost_velocities=True) + """
@@ -510,6 +535,7 @@ def test():
     args = lr.test_args(__doc__, with_solver(sys.argv[1:]))
     incline_tests(args)
     launched(args)
+    cones(args)
     rolling_tests(args)
     disc_tests(args)
     frictionless_same(args)

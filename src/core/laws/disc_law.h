@@ -183,6 +183,24 @@ struct DiscLaw {
     for (int q = 0; q < Discs; ++q)
       disc(m + 1 + 2 * q, g + 1 + 2 * q, d[1 + 2 * q], coefficient(k, q) * n);
   }
+  // The same local problem on the unshifted cone (SolverSettings::Cone::Convex): the point of
+  // K nearest to m - D^-1 g in the metric of D. With y = D^(1/2) m, K stays a cone whose disc
+  // q has the coefficient coef_q sqrt(d_q / d_n), so this is a Euclidean projection (project)
+  // there; with several discs d as in local_solve (a damped step with the same fixed point).
+  static void local_solve_convex(double *m, const double *g, const double *d,
+                                 const Coefficients &k)
+  {
+    double root[block], y[block];
+    for (int q = 0; q < block; ++q) {
+      root[q] = std::sqrt(d[q]);
+      y[q] = root[q] * (m[q] - g[q] / d[q]);
+    }
+    Coefficients scaled = k;
+    scaled.friction *= root[1] / root[0];
+    if constexpr (Discs > 1) scaled.rolling *= root[3] / root[0];
+    project(y, scaled);
+    for (int q = 0; q < block; ++q) m[q] = y[q] / root[q];
+  }
   // One disc of local_solve: v = v - g / d, brought back to the disc of radius cap along
   // itself (the exact minimiser over the disc when the block's entries are equal).
   static void disc(double *v, const double *g, double d, double cap)

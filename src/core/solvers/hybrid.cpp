@@ -13,6 +13,8 @@ SolveReport HybridSolver<Law>::solve(const ContactProblem &p, const SolverSettin
   if (skip_ > 0) {
     --skip_;
   } else {
+    // the lagged cone's caps are those of the warm start, not of the sweeps' iterate
+    if (Law::block > 1 && s.cone == SolverSettings::Cone::Lagged) warm_ = mu;
     SolverSettings first = s;
     first.maxiter = std::min(kSweeps, s.maxiter);
     const SolveReport r = sweeps_.solve(p, first, ops, mu, u);
@@ -25,6 +27,8 @@ SolveReport HybridSolver<Law>::solve(const ContactProblem &p, const SolverSettin
     skip_ = backoff_;
     backoff_ = std::min(2 * backoff_, kMaxBackoff);
   }
+  if (tried > 0 && Law::block > 1 && s.cone == SolverSettings::Cone::Lagged)
+    gradient_.lag_from(warm_);
   SolverSettings rest = s;
   rest.maxiter = std::max(1, s.maxiter - tried);
   SolveReport r = gradient_.solve(p, rest, ops, mu, u);

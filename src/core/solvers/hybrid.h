@@ -38,7 +38,7 @@ class HybridSolver : public Solver {
   }
   double memory_usage() const override
   {
-    return sweeps_.memory_usage() + gradient_.memory_usage();
+    return sweeps_.memory_usage() + gradient_.memory_usage() + bytes_of(warm_);
   }
 
   // Sweeps of one try: a packing at rest converges in 0-15 (measured); a try that fails costs
@@ -50,6 +50,7 @@ class HybridSolver : public Solver {
  private:
   NsgsSolver<Law> sweeps_;
   ApgdSolver<Law> gradient_;
+  std::vector<double> warm_;    // the lagged cone: the warm start of a try
   int skip_ = 0;       // solves left to run without a try
   int backoff_ = 1;    // solves to skip after the next failed try
 };

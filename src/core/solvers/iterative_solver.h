@@ -13,6 +13,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <vector>
 
 namespace hardcontact {
@@ -23,7 +24,7 @@ class IterativeSolver : public Solver {
   // the scratch every solver of this base keeps; a solver adds its own arrays
   double memory_usage() const override
   {
-    return bytes_of(shift_delta_, g_, law_shift_) + op_.memory_usage() + set_.memory_usage();
+    return bytes_of(shift_delta_, g_, law_shift_, cap_, warm_) + op_.memory_usage() + set_.memory_usage();
   }
 
   SolveReport solve(const ContactProblem &p, const SolverSettings &s, DistributedOps &ops,
@@ -42,8 +43,28 @@ class IterativeSolver : public Solver {
         dump_failed = !write_problem(s.dump_problem, p, set_.scales(), mu, s.tol);
     }
     if constexpr (B > 1) {
-      start_shifts(mu, u);
+      cone_ = s.cone;
       downward_ = false;
+      // Cone::Lagged: each row that pushed at the step's warm start caps its shift at its
+      // value there (lag_from() gives that warm start when mu is not it)
+      cap_.assign(nc, std::numeric_limits<double>::infinity());
+      if (cone_ == SolverSettings::Cone::Lagged) {
+        if (given_warm_) {    // the warm start as this solve's mu was made from it
+          warm_.resize(static_cast<size_t>(B) * nc, 0.0);
+          for (int c = 0; c < nc; ++c) Law::project(&warm_[static_cast<size_t>(B) * c], coef(p, c));
+        }
+        const std::vector<double> &warm = given_warm_ ? warm_ : mu;
+        op_.template velocities<B>(set_.rows(), warm, u);
+        double g[B];
+        for (const int c : set_.rows()) {
+          const size_t at = static_cast<size_t>(B) * c;
+          if (!(warm[at] > 0.0)) continue;
+          op_.template gap_block<B>(c, u, g);
+          cap_[c] = Law::shift(g, coef(c));
+        }
+      }
+      given_warm_ = false;
+      start_shifts(mu, u);
       best_drift_ = 1e300;
       stalled_ = 0;
     }
@@ -60,7 +81,7 @@ class IterativeSolver : public Solver {
         // the residual and the drift (which reads the law_shift_ set_residual leaves) in one
         // reduction
         double worst[2] = {set_residual(mu, u), 0.0};
-        worst[1] = local_shift_drift();
+        worst[1] = cone_ == SolverSettings::Cone::Convex ? 0.0 : local_shift_drift();
         ops.sum_max_all(worst, 0, 2);
         report.residual = worst[0];
         drift = worst[1];
@@ -117,6 +138,14 @@ class IterativeSolver : public Solver {
     }
     report.speed_scale = set_.speed_scale();
     return report;
+  }
+
+  // Cone::Lagged: the next solve caps the shifts at their values at this warm start, not at
+  // its own start (hybrid.h: the sweeps' iterate is not a warm start).
+  void lag_from(const std::vector<double> &warm)
+  {
+    warm_ = warm;
+    given_warm_ = true;
   }
 
  protected:
@@ -197,6 +226,7 @@ class IterativeSolver : public Solver {
   // changes only g_'s normal components, so it stays current through move_shifts().
   std::vector<double> law_shift_;
   double rho_ = 0.0;         // the step the method used, reported (0: none)
+  SolverSettings::Cone cone_ = SolverSettings::Cone::Lagged;    // friction: this solve's cone
 
  private:
   // Measured on a settling 3D pile (726 spheres, mu = 0.5, apgd): updating only once the
@@ -211,12 +241,25 @@ class IterativeSolver : public Solver {
   // relaxation's h mu |v_t| in that step.
   static constexpr int kMaxStalledShifts = 50;
   bool downward_ = false;
+  // Cone::Lagged: per row, the cap of its shift: for a row that pushed at the warm start, its
+  // shift there (the last step's slip carried over), else none. A shift is then Coulomb's
+  // wherever the slip does not grow beyond what the warm start predicted (a steady slide, a
+  // slide slowing down, every sticking contact), and a sliding contact whose slip grew lifts
+  // off by at most mu times the growth; the upward moves of the fixed point - each a change
+  // of the normal targets that the solve must then follow - were where a rearranging
+  // packing's iterations went (bench/friction/README.md, "The cone"). A new contact has no
+  // slip of its own to carry over (its warm start is the free motion, and an impact can make
+  // it slide faster): no cap. The capped fixed point is one equation, s = min(cap, Law::shift),
+  // so its answer does not depend on the path of the iterates (nor on the rank count).
+  std::vector<double> cap_;
+  std::vector<double> warm_;       // lag_from()'s warm start, for the next solve
+  bool given_warm_ = false;
   double best_drift_ = 0.0;
   int stalled_ = 0;
   // The shift row c moves to at the current iterate (g_ at u(mu)).
   double next_shift(int c) const
   {
-    const double next = law_shift_[c];
+    const double next = std::min(law_shift_[c], cap_[c]);
     const double now = op_.shift(c);
     return downward_ && next > now ? now : next;
   }
@@ -236,7 +279,7 @@ class IterativeSolver : public Solver {
     double g[B];
     for (const int c : set_.rows()) {
       op_.template gap_block<B>(c, u, g);
-      shift[c] = Law::shift(g, coef(c));
+      shift[c] = cone_ == SolverSettings::Cone::Convex ? 0.0 : std::min(cap_[c], Law::shift(g, coef(c)));
     }
   }
   // The shifts, and g_ with them, moved to those of the current iterate (g_ at u(mu)).

@@ -55,7 +55,7 @@ void NsgsSolver<Law>::local(int c, std::vector<double> &mu, std::vector<Vec3> &u
   true_gradient(c, u, g);
   double *m = &mu[static_cast<size_t>(B) * c];
   for (int k = 0; k < B; ++k) next[k] = m[k];
-  Law::local_solve(next, g, &diag_[static_cast<size_t>(B) * c], this->coef(c));
+  local_law(next, g, &diag_[static_cast<size_t>(B) * c], this->coef(c));
   bool any = false;
   for (int k = 0; k < B; ++k) {
     d[k] = next[k] - m[k];
@@ -78,7 +78,7 @@ bool NsgsSolver<Law>::step(const SolverSettings &, std::vector<double> &mu, std:
     if constexpr (B > 1) g[0] -= this->op_.shift(c);
     const double *m = &mu[static_cast<size_t>(B) * c];
     for (int k = 0; k < B; ++k) next[k] = m[k];
-    Law::local_solve(next, g, &diag_[static_cast<size_t>(B) * c], this->coef(c));
+    local_law(next, g, &diag_[static_cast<size_t>(B) * c], this->coef(c));
     for (int k = 0; k < B; ++k) dmu_[static_cast<size_t>(B) * q + k] = next[k] - m[k];
   }
   for (int q = 0; q < ns; ++q) {
@@ -105,7 +105,7 @@ double NsgsSolver<Law>::set_residual(const std::vector<double> &mu, const std::v
     double *g = &this->g_[static_cast<size_t>(B) * c];
     true_gradient(c, u, g);
     if constexpr (B > 1) {
-      const double s = Law::shift(g, this->coef(c));
+      const double s = this->cone_ == SolverSettings::Cone::Convex ? 0.0 : Law::shift(g, this->coef(c));
       this->op_.shift()[c] = s;
       g[0] += s;
     }

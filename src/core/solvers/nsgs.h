@@ -51,6 +51,15 @@ class NsgsSolver : public IterativeSolver<Law> {
   // The row's own gradient without the shift (the local solve needs none).
   void true_gradient(int c, const std::vector<Vec3> &u, double *g) const;
   void local(int c, std::vector<double> &mu, std::vector<Vec3> &u);
+  // The local solve of this solve's cone: Coulomb's law itself (Lagged, Exact: the sweeps need
+  // no shift), or the unshifted cone's (Convex).
+  void local_law(double *m, const double *g, const double *d, const Coefficients &k) const
+  {
+    if constexpr (B > 1) {
+      if (this->cone_ == SolverSettings::Cone::Convex) return Law::local_solve_convex(m, g, d, k);
+    }
+    Law::local_solve(m, g, d, k);
+  }
   std::vector<double> diag_;      // per row, B entries: the local solve's diagonal
   std::vector<double> dmu_;       // shared rows' steps of one sweep
   std::vector<int> shared_;       // rows of the set coupling an owned body with a ghost
