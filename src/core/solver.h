@@ -22,11 +22,11 @@ struct SolverSettings {
   int subspace = 0;
   // Friction: how a solve treats De Saxce's shift of the normal target (laws/disc_law.h), the
   // one thing that makes Coulomb's law nonconvex (iterative_solver.h, where each is measured):
-  //   Lagged (the default): the shift starts at its value at the warm start and only goes down
-  //     within the solve. Coulomb's law wherever a contact slides no faster than the warm start
-  //     predicted (a steady slide, a slide slowing down, every sticking contact); where its slip
-  //     grew within the step a sliding contact may lift off by at most mu times that growth.
-  //     Never an overlap.
+  //   Lagged (the default): a contact that pushed at the warm start may keep its shift there
+  //     where Coulomb's is higher by at most 3 tol of its row scale (iterative_solver.h,
+  //     kLagAllowance): Coulomb's law wherever a contact slides no faster than the warm start
+  //     predicted (a steady slide, a slide slowing down, every sticking contact), and elsewhere
+  //     a lift-off of at most 3 tol of the row scale. Never an overlap.
   //   Exact: the shifts are brought to their fixed point in every solve: Coulomb's law itself.
   //   Convex: no shift, Anitescu and Tasora's convex relaxation (the cone complementarity
   //     problem): a sliding contact lifts off at mu |slip| in every step.

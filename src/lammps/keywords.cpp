@@ -402,9 +402,10 @@ const Keyword keywords[] = {
      "friction mu [I J]: Coulomb friction coefficient >= 0 for type pairs I J (all: default); "
      "walls use the value of the atom's type with itself"},
     {"cone", 1, 0, parse_cone,
-     "cone lagged|exact|convex: friction's cone, De Saxce's shift from the warm start and only "
-     "lowered (lagged, the default), brought to its fixed point in every solve (exact), or none "
-     "(convex: Anitescu and Tasora's relaxation, sliding contacts lift off at mu |slip|)"},
+     "cone lagged|exact|convex: friction's cone, De Saxce's shift kept at its warm-start value "
+     "within 3 tol of Coulomb's (lagged, the default), brought to its fixed point in every solve "
+     "(exact), or none (convex: Anitescu and Tasora's relaxation, sliding contacts lift off at "
+     "mu |slip|)"},
     {"rolling", 1, 2, parse_rolling,
      "rolling mur [I J]: rolling resistance >= 0 (torque at most mur R F_n) for type pairs I J "
      "(all: default)"},

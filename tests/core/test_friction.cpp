@@ -5,7 +5,8 @@
 //  - an oblique pair: tangential impulse <= mu x normal impulse, sticking below and sliding
 //    above the analytic threshold v_t / v_n = 7/2 mu; linear and angular momentum exact;
 //  - random packings: hybrid, apgd, pgs, uzawa and nsgs agree, kinetic energy (spins included) never grows,
-//    no overlap, every multiplier in its cone.
+//    no overlap, every multiplier in its cone; under the convex cone too (and its lift-off is
+//    mu |slip|), and the lagged cone is the exact law from the exact answer and from rest.
 #include "core_test_util.h"
 #include "random_config.h"
 
@@ -33,15 +34,19 @@ struct Solved {
   hardcontact::SolveReport report;
 };
 
-Solved solve(const ContactProblem &p, const std::string &name, double tol = 1e-8)
+Solved solve(const ContactProblem &p, const std::string &name, double tol = 1e-8,
+             SolverSettings::Cone cone = SolverSettings::Cone::Lagged,
+             const std::vector<double> &warm = {})
 {
   auto solver = hardcontact::make_solver(name, hardcontact::ContactLaw::Coulomb);
   EXPECT_TRUE(solver) << name;
   SerialOps ops;
   SolverSettings s;
   s.tol = tol;
+  s.cone = cone;
   s.maxiter = 200000;
   Solved out;
+  out.mu = warm;
   out.report = solver->solve(p, s, ops, out.mu, out.u);
   if (getenv("HC_VERBOSE")) printf("%s it %d res %g\n", name.c_str(), out.report.iterations, out.report.residual);
   EXPECT_TRUE(out.report.converged) << name << " residual " << out.report.residual;
@@ -186,6 +191,124 @@ TEST(Friction, SolversAgreeOnRandomPackings)
       }
     }
   }
+}
+
+// The cones (SolverSettings::Cone) on the random packings:
+//  - convex (no shift): every solver reaches the same answer, the relaxation's: no overlap,
+//    and every pushing contact's gap at least mu |slip| h (its lift-off), energy never grows;
+//  - lagged from the exact answer as its warm start: the caps are the exact shifts, so the
+//    answer is the exact one (Coulomb's law wherever the slip does not grow);
+//  - lagged from a cold start is exact: a contact that did not push has no cap;
+//  - lagged from another problem's answer: no overlap, and no pushing contact lifts off by
+//    more than 3 tol of its scale.
+TEST(Friction, ConesOnRandomPackings)
+{
+  using Cone = SolverSettings::Cone;
+  const double tol = 1e-7, mu = 0.5;
+  for (unsigned seed : {3u, 11u}) {
+    hctest::RandomConfigOptions o;
+    o.n = 60;
+    o.box = 6.0;
+    o.mass_decades = 1.0;
+    hctest::RandomConfig c = hctest::random_config(seed, o);
+    std::vector<Vec3> w(c.p.n_bodies());
+    for (int b = 0; b < c.p.n_bodies(); ++b) w[b] = Vec3(std::sin(b), std::cos(3 * b), 0.5);
+    add_friction(c.p, c.r, mu, w);
+    std::vector<Vec3> u_free(c.p.u_free);
+    u_free.insert(u_free.end(), w.begin(), w.end());
+    const double e_free = kinetic2(c.p, u_free);
+    const Solved convex = solve(c.p, "apgd", tol, Cone::Convex);
+    const Solved exact = solve(c.p, "apgd", tol, Cone::Exact);
+    double lift = 0.0;    // the relaxation's largest lift-off: it differs from Coulomb's law
+    for (const char *name : {"hybrid", "apgd", "pgs", "uzawa", "nsgs"}) {
+      const Solved s = solve(c.p, name, tol, Cone::Convex);
+      EXPECT_LE(kinetic2(c.p, s.u), e_free * (1.0 + 1e-12)) << name;
+      double worst = 0.0;
+      for (size_t d = 0; d < s.u.size(); ++d) worst = std::max(worst, (s.u[d] - convex.u[d]).norm());
+      EXPECT_LT(worst, 1e-5) << name << " seed " << seed;
+      for (int r = 0; r < c.p.n_contacts(); ++r) {
+        const double gap = c.p.predicted_gap(r, s.u);
+        const Vec3 v = c.p.slip_velocity(r, s.u);
+        const double slip = c.p.h * (v - v.dot(c.p.normal[r]) * c.p.normal[r]).norm();
+        EXPECT_GE(gap, -2.0 * tol * c.p.size[r]) << name;
+        if (s.mu[3 * r] > 1e-6) {
+          EXPECT_NEAR(gap, mu * slip, 1e-5 * c.p.size[r]) << name << " row " << r;
+          lift = std::max(lift, gap / c.p.size[r]);
+        }
+      }
+    }
+    EXPECT_GT(lift, 1e-3) << "seed " << seed;    // the relaxation is not Coulomb's law here
+    double off = 0.0;
+    for (size_t d = 0; d < exact.u.size(); ++d) off = std::max(off, (exact.u[d] - convex.u[d]).norm());
+    EXPECT_GT(off, 1e-3) << "seed " << seed;
+    // a warm start from another problem (half the free velocities): slips grow beyond what it
+    // predicts, and a pushing contact may lift off by at most 3 tol of its scale (<= size)
+    ContactProblem half = c.p;
+    for (auto &v : half.u_free) v *= 0.5;
+    for (auto &v : half.w_free) v *= 0.5;
+    const Solved other = solve(half, "apgd", tol, Cone::Exact);
+    // (nsgs: its sweeps solve Coulomb's law itself under either cone)
+    for (const char *name : {"hybrid", "apgd", "pgs", "uzawa"}) {
+      const Solved s = solve(c.p, name, tol, Cone::Lagged, other.mu);
+      for (int r = 0; r < c.p.n_contacts(); ++r) {
+        const double gap = c.p.predicted_gap(r, s.u);
+        EXPECT_GE(gap, -2.0 * tol * c.p.size[r]) << name;
+        if (s.mu[3 * r] > 0.0) EXPECT_LE(gap, 5.0 * tol * c.p.size[r]) << name << " row " << r;
+      }
+    }
+    for (const char *name : {"hybrid", "apgd", "pgs", "uzawa"}) {
+      const Solved warm = solve(c.p, name, tol, Cone::Lagged, exact.mu);
+      const Solved cold = solve(c.p, name, tol, Cone::Lagged);
+      double worst = 0.0;
+      for (size_t d = 0; d < exact.u.size(); ++d)
+        worst = std::max({worst, (warm.u[d] - exact.u[d]).norm(), (cold.u[d] - exact.u[d]).norm()});
+      EXPECT_LT(worst, 1e-5) << name << " seed " << seed;
+    }
+  }
+}
+
+// The local solve on the unshifted cone (DiscLaw::local_solve_convex) is the projection of
+// m - D^-1 g onto K in the metric of D: (m' - m + D^-1 g)^T D (z - m') >= 0 for every z in K,
+// with one disc and with two.
+template <class Law>
+void convex_local_solve_is_the_projection(double rolling)
+{
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> uni(-1.0, 1.0);
+  hardcontact::Coefficients k;
+  k.friction = 0.4;
+  k.rolling = rolling;
+  constexpr int B = Law::block;
+  for (int trial = 0; trial < 500; ++trial) {
+    double d[B], m[B], g[B], next[B];
+    for (int q = 0; q < B; ++q) {
+      d[q] = q == 0 ? 0.5 + 0.4 * uni(rng) : 1.75 + uni(rng);
+      if (q >= 2 && q % 2 == 0) d[q] = d[q - 1];    // equal within a disc
+      m[q] = uni(rng);
+      g[q] = uni(rng);
+    }
+    Law::project(m, k);
+    for (int q = 0; q < B; ++q) next[q] = m[q];
+    Law::local_solve_convex(next, g, d, k);
+    double in[B];
+    for (int q = 0; q < B; ++q) in[q] = next[q];
+    Law::project(in, k);
+    for (int q = 0; q < B; ++q) EXPECT_NEAR(in[q], next[q], 1e-12);    // in K
+    for (int probe = 0; probe < 50; ++probe) {
+      double z[B];
+      for (int q = 0; q < B; ++q) z[q] = 2.0 * uni(rng);
+      Law::project(z, k);
+      double vi = 0.0;
+      for (int q = 0; q < B; ++q) vi += (next[q] - m[q] + g[q] / d[q]) * d[q] * (z[q] - next[q]);
+      EXPECT_GE(vi, -1e-12);
+    }
+  }
+}
+
+TEST(Friction, ConvexLocalSolveIsTheMetricProjection)
+{
+  convex_local_solve_is_the_projection<hardcontact::CoulombLaw>(0.0);
+  convex_local_solve_is_the_projection<hardcontact::RollingLaw>(0.2);
 }
 
 // The projection onto {|t| <= mu n, |r| <= mur n} against a search over the normal value

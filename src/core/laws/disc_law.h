@@ -46,8 +46,19 @@ struct DiscLaw {
       int outside = 0;
       while (outside < Discs && len[outside] <= coef[outside] * n) ++outside;
       if (outside == Discs) return;    // inside (n >= 0)
-      double best = 0.0;
-      for (int set = 0; set < (1 << Discs); ++set) {    // bit q: disc q outside at the root
+      // The minimiser is the root of the consistent piece; each piece's root is a candidate
+      // and f picks among them (and 0): a point on or within round-off of several discs' edges
+      // may find no piece consistent to the bit, and was sent to 0.
+      const auto f = [&](double at) {
+        double v = (at - n) * (at - n);
+        for (int q = 0; q < Discs; ++q) {
+          const double over = len[q] - coef[q] * at;
+          if (over > 0.0) v += over * over;
+        }
+        return v;
+      };
+      double best = 0.0, best_f = f(0.0);
+      for (int set = 1; set < (1 << Discs); ++set) {    // bit q: disc q outside at the root
         double num = n, den = 1.0;
         for (int q = 0; q < Discs; ++q)
           if (set & (1 << q)) {
@@ -55,15 +66,11 @@ struct DiscLaw {
             den += coef[q] * coef[q];
           }
         const double root = num / den;
-        if (root < 0.0) continue;
-        bool consistent = true;
-        for (int q = 0; q < Discs; ++q) {
-          const bool outside = len[q] > coef[q] * root;
-          consistent = consistent && outside == ((set & (1 << q)) != 0);
-        }
-        if (consistent) {
+        if (!(root > 0.0)) continue;
+        const double at = f(root);
+        if (at < best_f) {
           best = root;
-          break;
+          best_f = at;
         }
       }
       m[0] = best;
