@@ -43,7 +43,7 @@ drum() {    # drum CONE|soft
 }
 
 heap() {    # heap CONE|soft SEED
-  local d="$WORK/heap_$1_$2" angle loop steps stats=",,"
+  local d="$WORK/heap_$1_$2" angle flank loop steps stats=",,"
   mkdir -p "$d"
   if [ "$1" = soft ]; then
     (cd "$d" && "$SOFT_LMP" -in "$EX/heap/in.heap.soft" -var mu 0.5 -var seed "$2" "${HEAP[@]}" \
@@ -53,7 +53,9 @@ heap() {    # heap CONE|soft SEED
        "${HEAP[@]}" -log log.lammps -echo none -screen none > /dev/null)
     stats=$(hard_stats "$d")
   fi
-  angle=$("$PY" "$EX/heap/heap_angle.py" --floor 1.0 "$d/heap.dump" | sed -n 's/.*flank \([0-9.]*\) deg.*cone \([0-9.]*\) deg.*/\1 \/ \2/p')
+  angle=$("$PY" "$EX/heap/heap_angle.py" --floor 1.0 "$d/heap.dump")
+  flank=$(sed -n 's/.*flank \([0-9.]*\) deg.*/\1/p' <<< "$angle")
+  angle="${flank:-nan} / $(sed -n 's/.*cone \([0-9.]*\) deg.*/\1/p' <<< "$angle")"
   IFS=, read -r loop steps < <(bench_thermo "$d/log.lammps" loop steps)
   echo "heap,$1,$2,flank / cone angle (deg),$angle,$loop,$steps,$stats,$(bench_load1)" >> "$CSV"
 }

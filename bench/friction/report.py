@@ -10,7 +10,7 @@ import csv
 import sys
 from pathlib import Path
 
-DEFAULT = ("apgd", 1e-2, 0.02)    # the fix's default with friction (solver, tol) at the deck's h
+DEFAULT = ("hybrid", 1e-2, 0.02)    # the fix's default with friction (solver, tol, cone lagged) at the deck's h
 OLD_DEFAULT = ("apgd", 1e-4, 0.02)    # before 2026-12-04
 
 
@@ -57,7 +57,7 @@ def main():
         return
     fig, ax = plt.subplots(figsize=(7, 4.5))
     for r in hard:
-        mk = {"apgd": "o", "nsgs": "^"}.get(r["solver"], "o")
+        mk = {"apgd": "o", "nsgs": "^", "hybrid": "D"}.get(r["solver"].split("/")[0], "s")
         ax.plot(r["loop_s"], r["zavg"], mk, color="C%d" % [0.02, 0.04, 0.08].index(r["h"]) if r["h"] in (0.02, 0.04, 0.08) else "k")
         ax.annotate("%s %g h %g" % (r["solver"], r["tol"], r["h"]), (r["loop_s"], r["zavg"]),
                     fontsize=7, xytext=(3, 3), textcoords="offset points")

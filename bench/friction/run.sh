@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # The frictional suite (README.md here): the 10-layer settle at every (tol, h) with its twins,
-# the heap over three seeds, then the table and the plot, into bench/results/friction/<host>/;
+# the heap over three seeds, the cones on the drum, heap and hopper (cones.sh), then the table
+# and the plot, into bench/results/friction/<host>/;
 # --quick checks the scripts (a small settle, one heap seed, about 5 minutes).
 #   bench/run.sh friction [--quick]        (or bench/friction/run.sh [--quick])
 # The 8000-sphere settle is separate: python3 front.py --scene settle20 --results DIR (about 4
@@ -12,5 +13,6 @@ HERE="$ROOT/bench/friction"
 "$PY" "$HERE/front.py" --jobs "${FRONT_JOBS:-2}" --lmp "$LMP" --soft-lmp "$SOFT_LMP" \
   --results "$RESULTS" "${QUICK[@]}"
 bash "$HERE/heap_front.sh" "${QUICK[@]}"
+bash "$HERE/cones.sh" "${QUICK[@]}"
 "$PY" "$HERE/report.py" "$RESULTS/friction_front${QUICK:+_quick}.csv"
 echo "friction suite ($MODE): $RESULTS"
