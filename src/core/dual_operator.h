@@ -21,7 +21,6 @@ class DualOperator {
   {
     p_ = &p;
     ops_ = &ops;
-    if (!p.friction.empty()) shift_.assign(p.n_contacts(), 0.0);
   }
   const ContactProblem &problem() const { return *p_; }
   DistributedOps &ops() const { return *ops_; }
@@ -112,8 +111,9 @@ class DualOperator {
 
   // g_c(u) = D_c + h G_c u, eq. 15: also the gradient of the dual objective at mu(u).
   double gap(int c, const std::vector<Vec3> &u) const { return p_->predicted_gap(c, u); }
-  // The B components of the gradient of the dual at u for row c: the gap, then (friction)
-  // the tangential displacements h t_k . v_slip, the gap shifted by shift(c) (laws/coulomb.h).
+  // The B components of h G_c u + D_c for row c: the gap, then (friction) the tangential
+  // displacements h t_k . v_slip. Linear in u: De Saxce's shift of the gap (laws/disc_law.h)
+  // is the solver's (IterativeSolver::gradient_block).
   template <int B>
   void gap_block(int c, const std::vector<Vec3> &u, double *g) const
   {
@@ -123,7 +123,7 @@ class DualOperator {
       static_assert(B == 3 || B == 5, "blocks of 1 (normal), 3 (Coulomb) or 5 (rolling)");
       const ContactProblem &p = *p_;
       const Vec3 v = p.h * p.slip_velocity(c, u);
-      g[0] = p.gap[c] + p.normal[c].dot(v) + shift_[c];
+      g[0] = p.gap[c] + p.normal[c].dot(v);
       g[1] = p.tangent1[c].dot(v);
       g[2] = p.tangent2[c].dot(v);
       if constexpr (B == 5) {
@@ -273,10 +273,7 @@ class DualOperator {
   void forces(const std::vector<double> &mu, std::vector<Vec3> &force,
               std::vector<Vec3> *torque = nullptr) const;
 
-  // The normal target shift of each row (friction, laws/coulomb.h): 0 after bind().
-  std::vector<double> &shift() { return shift_; }
-  double memory_usage() const { return bytes_of(deg_, arm2_, shift_); }
-  double shift(int c) const { return shift_[c]; }
+  double memory_usage() const { return bytes_of(deg_, arm2_); }
 
  private:
   // u = u_free (owned bodies), then the spins.
@@ -308,7 +305,6 @@ class DualOperator {
   DistributedOps *ops_ = nullptr;
   std::vector<double> deg_;      // per body, from count_degrees()
   std::vector<double> arm2_;     // per body, the longest arm squared (friction), ditto
-  std::vector<double> shift_;    // per row, friction only
 };
 
 // One-off forms of the above, for the host and tests (they bind an operator of their own).

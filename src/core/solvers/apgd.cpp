@@ -15,7 +15,7 @@ double ApgdSolver<Law>::linear(int c, int k) const
 {
   const double b = b_[static_cast<size_t>(B) * c + k];
   if constexpr (B == 1) return b;
-  else return k == 0 ? b + this->op_.shift(c) : b;
+  else return k == 0 ? b + this->shift(c) : b;
 }
 
 template <class Law>
@@ -23,8 +23,7 @@ void ApgdSolver<Law>::gaps(const std::vector<double> &m, std::vector<double> &g,
                            std::vector<Vec3> &u)
 {
   this->op_.template velocities<B>(this->set_.rows(), m, u);
-  for (const int c : this->set_.rows())
-    this->op_.template gap_block<B>(c, u, &g[static_cast<size_t>(B) * c]);
+  for (const int c : this->set_.rows()) this->gradient_block(c, u, &g[static_cast<size_t>(B) * c]);
 }
 
 template <class Law>
@@ -90,10 +89,7 @@ void ApgdSolver<Law>::start(const SolverSettings &s, std::vector<double> &mu,
   for (auto *v : {&b_, &y_, &gy_, &next_, &gnext_}) v->assign(n, 0.0);
   std::fill(this->g_.begin(), this->g_.end(), 0.0);
   this->op_.free_velocities(u);
-  for (int c = 0; c < nc; ++c) {
-    this->op_.template gap_block<B>(c, u, &b_[static_cast<size_t>(B) * c]);
-    if constexpr (B > 1) b_[static_cast<size_t>(B) * c] -= this->op_.shift(c);
-  }
+  for (int c = 0; c < nc; ++c) this->op_.template gap_block<B>(c, u, &b_[static_cast<size_t>(B) * c]);
   gaps(mu, this->g_, u);
   // the subspace start, the blocks projected onto the law's set; the shifts stay those of the
   // warm start (the fixed point moves them, as after any start)
@@ -136,7 +132,7 @@ void ApgdSolver<Law>::finished(const SolverSettings &s, const std::vector<double
   this->op_.template velocities<B>(rows, d, scratch_u_);
   for (const int c : rows) {
     double *q = &ad[static_cast<size_t>(B) * c];
-    this->op_.template gap_block<B>(c, scratch_u_, q);
+    this->gradient_block(c, scratch_u_, q);
     for (int k = 0; k < B; ++k) q[k] -= linear(c, k);
   }
   past_.record(std::move(d), std::move(ad), p, s.subspace);
@@ -164,7 +160,7 @@ template <class Law>
 void ApgdSolver<Law>::grown(const SolverSettings &, std::vector<double> &mu, std::vector<Vec3> &u)
 {
   for (const int c : this->set_.rows())    // u = u(mu)
-    this->op_.template gap_block<B>(c, u, &this->g_[static_cast<size_t>(B) * c]);
+    this->gradient_block(c, u, &this->g_[static_cast<size_t>(B) * c]);
   gaps(y_, gy_, u);
   this->op_.template velocities<B>(this->set_.rows(), mu, u);
   residual_ready_ = false;    // the set is larger
@@ -233,7 +229,7 @@ bool ApgdSolver<Law>::step(const SolverSettings &, std::vector<double> &mu, std:
     // each row counted once
     for (double &v : sums) v = 0.0;
     for (const int c : rows) {
-      this->op_.template gap_block<B>(c, u, &gnext_[static_cast<size_t>(B) * c]);
+      this->gradient_block(c, u, &gnext_[static_cast<size_t>(B) * c]);
       if (!p.counted[c]) continue;
       for (int k = 0; k < B; ++k) {
         const size_t a = static_cast<size_t>(B) * c + k;

@@ -20,10 +20,12 @@
 
 namespace hardcontact {
 
-// dmu: scratch (kept by the caller, no allocation once sized); g: the gaps of u on the rows.
+// dmu: scratch (kept by the caller, no allocation once sized); g: the gradients at u on the
+// rows; shift: friction's shift of each row's normal gap (IterativeSolver), or null.
 template <class Law>
 void block_sweep(const DualOperator &op, const std::vector<int> &rows, const std::vector<double> &g,
-                 std::vector<double> &dmu, std::vector<double> &mu, std::vector<Vec3> &u)
+                 const double *shift, std::vector<double> &dmu, std::vector<double> &mu,
+                 std::vector<Vec3> &u)
 {
   constexpr int B = Law::block;
   const ContactProblem &p = op.problem();
@@ -56,6 +58,7 @@ void block_sweep(const DualOperator &op, const std::vector<int> &rows, const std
     if (diag <= 0.0) continue;
     double *m = &mu[static_cast<size_t>(B) * c];
     op.template gap_block<B>(c, u, step);
+    if (shift != nullptr) step[0] += shift[c];
     for (int k = 0; k < B; ++k) next[k] = m[k] - step[k] / diag;
     Law::project(next, law_coefficients<Law>(p, c));
     for (int k = 0; k < B; ++k) {

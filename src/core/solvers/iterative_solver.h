@@ -24,7 +24,7 @@ class IterativeSolver : public Solver {
   // the scratch every solver of this base keeps; a solver adds its own arrays
   double memory_usage() const override
   {
-    return bytes_of(shift_delta_, g_, law_shift_, cap_, warm_) + op_.memory_usage() + set_.memory_usage();
+    return bytes_of(shift_, shift_delta_, g_, law_shift_, cap_, warm_) + op_.memory_usage() + set_.memory_usage();
   }
 
   SolveReport solve(const ContactProblem &p, const SolverSettings &s, DistributedOps &ops,
@@ -34,7 +34,10 @@ class IterativeSolver : public Solver {
     mu.resize(static_cast<size_t>(B) * nc, 0.0);
     for (int c = 0; c < nc; ++c) Law::project(&mu[static_cast<size_t>(B) * c], coef(p, c));
     g_.resize(static_cast<size_t>(B) * nc);
-    if constexpr (B > 1) law_shift_.resize(nc);
+    if constexpr (B > 1) {
+      law_shift_.resize(nc);
+      shift_.assign(nc, 0.0);
+    }
     op_.bind(p, ops);
     set_.init(p, mu, s.tol, ops);
     bool dump_failed = false;    // developers' dump (problem_dump.h): the law of eq. 15 only
@@ -193,7 +196,7 @@ class IterativeSolver : public Solver {
     double r = 0.0;
     for (const int c : set_.rows()) {
       const size_t at = static_cast<size_t>(B) * c;
-      op_.template gap_block<B>(c, u, &g_[at]);
+      gradient_block(c, u, &g_[at]);
       const double v = set_violation(c, mu, r);
       r = r > v ? r : v;
     }
@@ -227,6 +230,16 @@ class IterativeSolver : public Solver {
   // changes only g_'s normal components, so it stays current through move_shifts().
   std::vector<double> law_shift_;
   double rho_ = 0.0;         // the step the method used, reported (0: none)
+  // Friction: De Saxce's shift s_c of each row's normal target (laws/disc_law.h), 0 at the
+  // start of a solve and moved to its fixed point by solve() (the operator itself is linear)
+  std::vector<double> shift_;
+  double shift(int c) const { return shift_[c]; }
+  // The B components of row c's gradient at u: h G_c u + D_c, the normal one shifted by s_c.
+  void gradient_block(int c, const std::vector<Vec3> &u, double *g) const
+  {
+    op_.template gap_block<B>(c, u, g);
+    if constexpr (B > 1) g[0] += shift_[c];
+  }
   SolverSettings::Cone cone_ = SolverSettings::Cone::Lagged;    // friction: this solve's cone
 
  private:
@@ -267,7 +280,7 @@ class IterativeSolver : public Solver {
   double next_shift(int c) const
   {
     const double next = capped(c, law_shift_[c]);
-    const double now = op_.shift(c);
+    const double now = shift_[c];
     return downward_ && next > now ? now : next;
   }
   // The shift row c takes where Coulomb's is `law` (cap_ above).
@@ -280,14 +293,14 @@ class IterativeSolver : public Solver {
   {
     double worst = 0.0;
     for (const int c : set_.rows())
-      worst = std::max(worst, std::abs(next_shift(c) - op_.shift(c)) / set_.scale(c));
+      worst = std::max(worst, std::abs(next_shift(c) - shift_[c]) / set_.scale(c));
     return worst;
   }
   // Friction's normal shifts s_c = Law::shift (laws/law.h) from the start multipliers.
   void start_shifts(const std::vector<double> &mu, std::vector<Vec3> &u)
   {
     op_.template velocities<B>(set_.rows(), mu, u);
-    std::vector<double> &shift = op_.shift();
+    std::vector<double> &shift = shift_;
     double g[B];
     for (const int c : set_.rows()) {
       op_.template gap_block<B>(c, u, g);
@@ -297,7 +310,7 @@ class IterativeSolver : public Solver {
   // The shifts, and g_ with them, moved to those of the current iterate (g_ at u(mu)).
   void move_shifts()
   {
-    std::vector<double> &shift = op_.shift();
+    std::vector<double> &shift = shift_;
     shift_delta_.resize(shift.size());
     for (const int c : set_.rows()) {
       const double next = next_shift(c);

@@ -45,7 +45,6 @@ template <class Law>
 void NsgsSolver<Law>::true_gradient(int c, const std::vector<Vec3> &u, double *g) const
 {
   this->op_.template gap_block<B>(c, u, g);
-  if constexpr (B > 1) g[0] -= this->op_.shift(c);
 }
 
 template <class Law>
@@ -75,7 +74,7 @@ bool NsgsSolver<Law>::step(const SolverSettings &, std::vector<double> &mu, std:
     const int c = shared_[q];
     double g[B], next[B];
     for (int k = 0; k < B; ++k) g[k] = this->g_[static_cast<size_t>(B) * c + k];
-    if constexpr (B > 1) g[0] -= this->op_.shift(c);
+    if constexpr (B > 1) g[0] -= this->shift(c);
     const double *m = &mu[static_cast<size_t>(B) * c];
     for (int k = 0; k < B; ++k) next[k] = m[k];
     local_law(next, g, &diag_[static_cast<size_t>(B) * c], this->coef(c));
@@ -106,7 +105,7 @@ double NsgsSolver<Law>::set_residual(const std::vector<double> &mu, const std::v
     true_gradient(c, u, g);
     if constexpr (B > 1) {
       const double s = this->cone_ == SolverSettings::Cone::Convex ? 0.0 : Law::shift(g, this->coef(c));
-      this->op_.shift()[c] = s;
+      this->shift_[c] = s;
       g[0] += s;
     }
     r = std::max(r, this->set_violation(c, mu, r));

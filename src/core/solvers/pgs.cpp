@@ -7,7 +7,8 @@ namespace hardcontact {
 template <class Law>
 bool PgsSolver<Law>::step(const SolverSettings &, std::vector<double> &mu, std::vector<Vec3> &u)
 {
-  block_sweep<Law>(this->op_, this->set_.rows(), this->g_, dmu_, mu, u);
+  block_sweep<Law>(this->op_, this->set_.rows(), this->g_,
+                   B > 1 ? this->shift_.data() : nullptr, dmu_, mu, u);
   return true;
 }
 
