@@ -50,25 +50,23 @@ class IterativeSolver : public Solver {
       tol_ = s.tol;
       downward_ = false;
       // Cone::Lagged: each row that pushed at the step's warm start caps its shift at its
-      // value there (lag_from() gives that warm start when mu is not it)
+      // value there: from mu, in start_shifts' pass, or from lag_from()'s warm start when mu
+      // is not it (one more product)
       cap_.assign(nc, std::numeric_limits<double>::infinity());
-      if (cone_ == SolverSettings::Cone::Lagged) {
-        if (given_warm_) {    // the warm start as this solve's mu was made from it
-          warm_.resize(static_cast<size_t>(B) * nc, 0.0);
-          for (int c = 0; c < nc; ++c) Law::project(&warm_[static_cast<size_t>(B) * c], coef(p, c));
-        }
-        const std::vector<double> &warm = given_warm_ ? warm_ : mu;
-        op_.template velocities<B>(set_.rows(), warm, u);
+      const bool lagged = cone_ == SolverSettings::Cone::Lagged;
+      if (lagged && given_warm_) {    // the warm start as this solve's mu was made from it
+        warm_.resize(static_cast<size_t>(B) * nc, 0.0);
+        for (int c = 0; c < nc; ++c) Law::project(&warm_[static_cast<size_t>(B) * c], coef(p, c));
+        op_.template velocities<B>(set_.rows(), warm_, u);
         double g[B];
         for (const int c : set_.rows()) {
-          const size_t at = static_cast<size_t>(B) * c;
-          if (!(warm[at] > 0.0)) continue;
+          if (!(warm_[static_cast<size_t>(B) * c] > 0.0)) continue;
           op_.template gap_block<B>(c, u, g);
           cap_[c] = Law::shift(g, coef(c));
         }
       }
+      start_shifts(mu, u, lagged && !given_warm_);
       given_warm_ = false;
-      start_shifts(mu, u);
       best_drift_ = 1e300;
       stalled_ = 0;
     }
@@ -296,15 +294,18 @@ class IterativeSolver : public Solver {
       worst = std::max(worst, std::abs(next_shift(c) - shift_[c]) / set_.scale(c));
     return worst;
   }
-  // Friction's normal shifts s_c = Law::shift (laws/law.h) from the start multipliers.
-  void start_shifts(const std::vector<double> &mu, std::vector<Vec3> &u)
+  // Friction's normal shifts s_c = Law::shift (laws/law.h) from the start multipliers (and,
+  // with caps_from_start, the caps of the rows pushing there: Cone::Lagged).
+  void start_shifts(const std::vector<double> &mu, std::vector<Vec3> &u, bool caps_from_start)
   {
     op_.template velocities<B>(set_.rows(), mu, u);
     std::vector<double> &shift = shift_;
     double g[B];
     for (const int c : set_.rows()) {
       op_.template gap_block<B>(c, u, g);
-      shift[c] = cone_ == SolverSettings::Cone::Convex ? 0.0 : capped(c, Law::shift(g, coef(c)));
+      const double law = Law::shift(g, coef(c));
+      if (caps_from_start && mu[static_cast<size_t>(B) * c] > 0.0) cap_[c] = law;
+      shift[c] = cone_ == SolverSettings::Cone::Convex ? 0.0 : capped(c, law);
     }
   }
   // The shifts, and g_ with them, moved to those of the current iterate (g_ at u(mu)).
