@@ -11,6 +11,14 @@ region `plane` under g = 1; friction 0.8 between spheres, 0.3 on the floor (the 
   the floor.
 --case slide (a bed sliding to rest): the bed starts at V = 1 on the fixed floor; it stops at
   t = V / (mu_w g) = 3.33 with P_x = M (V - mu_w g t).
+--case heavy (a mass ratio of 1000 on a frictional bed): the bed at rest on the fixed floor
+  and, in a hollow of its top layer, one sphere of the same size and 1000 x the density; it
+  must rest there, the bed under it held by friction. At tol 1e-2 the solves leave velocity
+  errors up to tol x the row scale / h = tol g h (core/residual.h), and under the heavy sphere
+  the bed creeps at that order: the rest checks of this case are that bound (every sphere's
+  speed and spin r at most 2 tol g h - a contact point's slip sums the two - and its move over
+  the last 10 time units at most tol g h T), not the others' 1e-3 V; iterations at rest are measured, not bounded (50-55 per step with either
+  Coulomb cone, 8 with `cone convex`, 113 with tol 1e-4, measured 2026-12-06).
 
 Asserted at every step: no lost atom, no solve at maxiter, the largest overlap <= tol
 (f_hc[7]); the exact momentum balance sum m dv = h (sum of the floor rows' forces, normal and
@@ -35,6 +43,7 @@ import stability_common as sc
 N_SIDE, LAYERS, R = 6, 4, 0.5
 MU_PAIR, MU_FLOOR, V, G, H = 0.8, 0.3, 1.0, 1.0, 0.02
 T_START, T_END, T_REST = 1.0, 20.0, 10.0
+HEAVY = 1000.0    # the heavy case's density ratio
 TOL = 1e-2    # the fix's default with friction
 
 
@@ -57,11 +66,17 @@ def scene(case, data, keywords="", dumps=True):
     dumps: the atoms, spins and local rows the checks read. Also used by
     bench/studies/friction_hybrid/beds.py."""
     x, side = bed()
+    density = np.ones(len(x))
+    if case == "heavy":    # on the top layer (odd: offset 2R), in the hollow at (R, R)
+        top = float(x[:, 2].max())
+        x = np.vstack([x, [R, R, top + math.sqrt(2.0) * R]])
+        density = np.append(density, HEAVY)
     n = len(x)
     v = np.zeros_like(x)
     if case == "slide":
         v[:, 0] = V
-    sc.write_data(str(data), ((0.0, side), (0.0, side), (-1.0, 12.0)), np.full(n, R), 1.0, x, v)
+    sc.write_data(str(data), ((0.0, side), (0.0, side), (-1.0, 12.0)), np.full(n, R), density,
+                  x, v)
     xf = ("%r*(time-%r)*(time>%r)" % (V, T_START, T_START)) if case == "conveyor" else "0.0"
     forces = ("variable        xf equal %s\n"
               "region          floor plane 0 0 0 0 0 1 side in move v_xf NULL NULL" % xf)
@@ -88,7 +103,7 @@ def run_case(args, case, checks):
     sc.check_common(th, n, TOL, label, check=checks)
 
     mass = 4.0 / 3.0 * math.pi * R ** 3
-    M = n * mass
+    M = (n + (HEAVY - 1.0 if case == "heavy" else 0.0)) * mass
     steps = th["Step"].astype(int)
     t = steps * H
     P = np.column_stack([th["c_P[1]"], th["c_P[2]"], th["c_P[3]"]])
@@ -122,17 +137,23 @@ def run_case(args, case, checks):
     else:
         line = np.clip(M * a * (t - T_START), 0.0, M * V)
         window = (t > T_START + 0.2) & (t < T_START + t_stop - 0.2)
-    dev = float(np.abs(P[window, 0] - line[window]).max()) / (M * V)
-    checks(dev <= 1e-2, "%s: while the floor contacts slide, P_x follows the floor's friction "
-           "mu_w M g to %.2g of M V" % (label, dev))
+    dev = float(np.abs(P[window, 0] - line[window]).max()) / (M * V) if case != "heavy" else 0.0
+    if case != "heavy":
+        checks(dev <= 1e-2, "%s: while the floor contacts slide, P_x follows the floor's "
+               "friction mu_w M g to %.2g of M V" % (label, dev))
 
     # at rest in the floor's frame over the last T_REST
     rest = t >= T_END - T_REST
     # the kinetic energy relative to the floor: sum m |v - V_floor|^2 / 2
     ke_rel = th["c_ke"] - P[:, 0] * floor_speed + 0.5 * M * floor_speed ** 2
     worst_ke = float(ke_rel[rest].max()) / (n * mass * G * 2 * R)
-    checks(worst_ke <= 1e-6, "%s: at rest in the floor's frame over the last %g time units "
-           "(kinetic energy relative to the floor %.2g m g d per sphere)" % (label, T_REST, worst_ke))
+    # the heavy case: speeds and moves within what tol allows (the docstring)
+    speed_bound = 2.0 * TOL * G * H if case == "heavy" else 1e-3 * V
+    move_bound = TOL * G * H * T_REST if case == "heavy" else 1e-3 * 2 * R
+    if case != "heavy":
+        checks(worst_ke <= 1e-6, "%s: at rest in the floor's frame over the last %g time units "
+               "(kinetic energy relative to the floor %.2g m g d per sphere)"
+               % (label, T_REST, worst_ke))
     atoms = {f.timestep: f for f in lr.read_dump(wd / "dump.atoms")}
     spins = {f.timestep: f for f in lr.read_dump(wd / "dump.spin")}
     first = min(s for s in atoms if s * H >= T_END - T_REST)
@@ -141,15 +162,15 @@ def run_case(args, case, checks):
     dv = float(np.abs(sc.velocities(fb) - np.array([floor_speed, 0.0, 0.0])).max())
     w = spins[last].columns
     spin = float(np.abs(np.column_stack([w["omegax"], w["omegay"], w["omegaz"]])).max()) * R
-    checks(dv <= 1e-3 * V and spin <= 1e-3 * V, "%s: every sphere moves with the floor "
-           "(|v - V_floor| <= %.2g, |omega| r <= %.2g; bound 1e-3 V)" % (label, dv, spin))
+    checks(dv <= speed_bound and spin <= speed_bound, "%s: every sphere moves with the floor "
+           "(|v - V_floor| <= %.2g, |omega| r <= %.2g; bound %.2g)" % (label, dv, spin, speed_bound))
     shift = floor_speed * (last - first) * H
     disp = sc.positions(fb) - sc.positions(fa)
     disp[:, 0] -= shift
     disp[:, :2] -= side * np.round(disp[:, :2] / side)    # periodic images
     creep = float(np.abs(disp).max())
-    checks(creep <= 1e-3 * 2 * R, "%s: no creep relative to the floor over the last %g time "
-           "units (largest move %.2g d)" % (label, T_REST, creep))
+    checks(creep <= move_bound, "%s: no creep relative to the floor over the last %g time "
+           "units beyond %.2g d (largest move %.2g d)" % (label, T_REST, move_bound, creep))
     worst_pair = 0.0
     for fr in (fa, fb):
         pos = sc.positions(fr)
@@ -163,7 +184,7 @@ def run_case(args, case, checks):
     checks(worst_pair <= TOL, "%s: no pair overlaps by more than tol in the dumps at rest "
            "(%.2g)" % (label, worst_pair))
     it = th["f_hc[1]"][rest]
-    checks(float(it.mean()) <= 20.0, "%s: a handful of iterations per step at rest (mean %.1f, "
+    checks(case == "heavy" or float(it.mean()) <= 20.0, "%s: a handful of iterations per step at rest (mean %.1f, "
            "largest %d)" % (label, float(it.mean()), int(it.max())))
     sc.report(label, iterations_rest_mean=float(it.mean()), iterations_rest_max=int(it.max()),
               iterations_max=int(th["f_hc[1]"].max()), momentum_balance=worst,
