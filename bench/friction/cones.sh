@@ -21,7 +21,7 @@ echo "scene,run,seed,observable,value,loop_s,steps,it_mean,overlap_max,maxiter_s
 # hard DIR: iterations (mean over the thermo rows after the first), largest overlap, maxiter stops
 hard_stats() {
   local it ov stops
-  IFS=, read -r _ _ it < <(bench_thermo "$1/log.lammps" loop steps mean:f_hc[1])
+  it=$(bench_thermo "$1/log.lammps" mean:f_hc[1])
   IFS=, read -r ov stops < <(bench_thermo --keep-first "$1/log.lammps" max:f_hc[7] last:f_hc[6])
   echo "$it,$ov,$stops"
 }

@@ -162,21 +162,35 @@ double kinetic2(const ContactProblem &p, const std::vector<Vec3> &u)
   return e;
 }
 
+// 60 spheres of a random packing (masses over a decade), each spinning, friction mu on every
+// row; e_free: the kinetic energy (spins included) of the free motion.
+struct SpinningPacking {
+  hctest::RandomConfig c;
+  double e_free;
+};
+SpinningPacking spinning_packing(unsigned seed, double mu)
+{
+  hctest::RandomConfigOptions o;
+  o.n = 60;
+  o.box = 6.0;
+  o.mass_decades = 1.0;
+  SpinningPacking k{hctest::random_config(seed, o), 0.0};
+  std::vector<Vec3> w(k.c.p.n_bodies());
+  for (int b = 0; b < k.c.p.n_bodies(); ++b) w[b] = Vec3(std::sin(b), std::cos(3 * b), 0.5);
+  add_friction(k.c.p, k.c.r, mu, w);
+  std::vector<Vec3> u_free(k.c.p.u_free);
+  u_free.insert(u_free.end(), w.begin(), w.end());
+  k.e_free = kinetic2(k.c.p, u_free);
+  return k;
+}
+
 TEST(Friction, SolversAgreeOnRandomPackings)
 {
   const double tol = getenv("HC_TOL") ? atof(getenv("HC_TOL")) : 1e-7;
   for (unsigned seed : {3u, 11u}) {
-    hctest::RandomConfigOptions o;
-    o.n = 60;
-    o.box = 6.0;
-    o.mass_decades = 1.0;
-    hctest::RandomConfig c = hctest::random_config(seed, o);
-    std::vector<Vec3> w(c.p.n_bodies());
-    for (int b = 0; b < c.p.n_bodies(); ++b) w[b] = Vec3(std::sin(b), std::cos(3 * b), 0.5);
-    add_friction(c.p, c.r, 0.5, w);
-    std::vector<Vec3> u_free(c.p.u_free);
-    u_free.insert(u_free.end(), w.begin(), w.end());
-    const double e_free = kinetic2(c.p, u_free);
+    const SpinningPacking k = spinning_packing(seed, 0.5);
+    const hctest::RandomConfig &c = k.c;
+    const double e_free = k.e_free;
     const Solved a = solve(c.p, "apgd", tol);
     for (const char *name : {"hybrid", "apgd", "pgs", "uzawa", "nsgs"}) {
       const Solved s = solve(c.p, name, tol);
@@ -206,17 +220,9 @@ TEST(Friction, ConesOnRandomPackings)
   using Cone = SolverSettings::Cone;
   const double tol = 1e-7, mu = 0.5;
   for (unsigned seed : {3u, 11u}) {
-    hctest::RandomConfigOptions o;
-    o.n = 60;
-    o.box = 6.0;
-    o.mass_decades = 1.0;
-    hctest::RandomConfig c = hctest::random_config(seed, o);
-    std::vector<Vec3> w(c.p.n_bodies());
-    for (int b = 0; b < c.p.n_bodies(); ++b) w[b] = Vec3(std::sin(b), std::cos(3 * b), 0.5);
-    add_friction(c.p, c.r, mu, w);
-    std::vector<Vec3> u_free(c.p.u_free);
-    u_free.insert(u_free.end(), w.begin(), w.end());
-    const double e_free = kinetic2(c.p, u_free);
+    const SpinningPacking k = spinning_packing(seed, mu);
+    const hctest::RandomConfig &c = k.c;
+    const double e_free = k.e_free;
     const Solved convex = solve(c.p, "apgd", tol, Cone::Convex);
     const Solved exact = solve(c.p, "apgd", tol, Cone::Exact);
     double lift = 0.0;    // the relaxation's largest lift-off: it differs from Coulomb's law

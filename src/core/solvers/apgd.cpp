@@ -89,7 +89,8 @@ void ApgdSolver<Law>::start(const SolverSettings &s, std::vector<double> &mu,
   for (auto *v : {&b_, &y_, &gy_, &next_, &gnext_}) v->assign(n, 0.0);
   std::fill(this->g_.begin(), this->g_.end(), 0.0);
   this->op_.free_velocities(u);
-  for (int c = 0; c < nc; ++c) this->op_.template gap_block<B>(c, u, &b_[static_cast<size_t>(B) * c]);
+  for (int c = 0; c < nc; ++c)
+    this->op_.template gap_block<B>(c, u, &b_[static_cast<size_t>(B) * c]);
   gaps(mu, this->g_, u);
   // the subspace start, the blocks projected onto the law's set; the shifts stay those of the
   // warm start (the fixed point moves them, as after any start)

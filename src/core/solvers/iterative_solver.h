@@ -24,7 +24,8 @@ class IterativeSolver : public Solver {
   // the scratch every solver of this base keeps; a solver adds its own arrays
   double memory_usage() const override
   {
-    return bytes_of(shift_, shift_delta_, g_, law_shift_, cap_, warm_) + op_.memory_usage() + set_.memory_usage();
+    return bytes_of(shift_, shift_delta_, g_, law_shift_, cap_, warm_) + op_.memory_usage() +
+           set_.memory_usage();
   }
 
   SolveReport solve(const ContactProblem &p, const SolverSettings &s, DistributedOps &ops,

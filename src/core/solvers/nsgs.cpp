@@ -104,7 +104,8 @@ double NsgsSolver<Law>::set_residual(const std::vector<double> &mu, const std::v
     double *g = &this->g_[static_cast<size_t>(B) * c];
     true_gradient(c, u, g);
     if constexpr (B > 1) {
-      const double s = this->cone_ == SolverSettings::Cone::Convex ? 0.0 : Law::shift(g, this->coef(c));
+      const double s =
+          this->cone_ == SolverSettings::Cone::Convex ? 0.0 : Law::shift(g, this->coef(c));
       this->shift_[c] = s;
       g[0] += s;
     }
