@@ -99,3 +99,10 @@ foreach(_case conveyor slide heavy)
     SCRIPT integration/test_stab_friction.py NP 1 2 LABELS stability
     ARGS --case ${_case} --timeout 200 TIMEOUT 300)
 endforeach()
+# a frictional heap at rest (issue 36): examples/heap/in.heap pours 400 spheres (mu 0.5, the
+# fix's defaults with friction) onto its rough floor; at rest from t = 80 to 100: no maxiter,
+# overlaps within tol, kinetic energy, speeds, creep, height and cone angle within what tol
+# allows; about 7 s (np 1) and 10 s (np 2)
+hardcontact_deck_test(NAME stab_friction_heap HOSTS launcher
+  SCRIPT integration/test_stab_friction_heap.py NP 1 2 LABELS stability
+  ARGS --timeout 150 TIMEOUT 240)
