@@ -67,3 +67,7 @@ example_test(hopper3d 240 HOSTS launcher modern)
 # the drum and is dragged up the rising side, its surface tilts; soft twin; the decks differ only
 # in their contact block (LAMMPS hosts: LIGGGHTS has no region walls)
 example_test(drum 300 HOSTS launcher modern)
+
+# column_collapse: a quasi-2D column (L0 6, about 300 spheres) released onto a rough floor,
+# mu 0.5 and 0.1, and the soft twin: runout ordering, the experiments' band, the twin's runout
+example_test(column_collapse 300 HOSTS launcher modern)
