@@ -101,3 +101,11 @@ hardcontact_deck_test(NAME phys_skin_lookahead SCRIPT integration/test_phys_skin
 # height, no overlap beyond tol, at most half the iterations; ranks take the same coefficients
 hardcontact_deck_test(NAME phys_subspace SCRIPT integration/test_phys_subspace.py NP 1 2 4
                       LABELS physics TIMEOUT 300 HOSTS launcher modern liggghts)
+
+# adaptive steps (issue 36): fix dt/reset with the fix - a sphere's free fall is the scheme's
+# with the steps dt/reset chose, then it rests on the wall (drop); a frictional pile settles at
+# rest with 0.6 x the steps or fewer and the fixed step's height within 5 % (pile)
+foreach(_case drop pile)
+  hardcontact_deck_test(NAME phys_dt_reset_${_case} SCRIPT integration/test_phys_dt_reset.py
+    NP 1 2 4 LABELS physics HOSTS launcher modern ARGS --case ${_case} TIMEOUT 300)
+endforeach()
