@@ -47,6 +47,20 @@ def hard_deck(scene, data, solver, tol, h, T, extra=""):
     return deck.replace("solver SOLVER ", "")
 
 
+def adaptive(deck, hmax, xmax, T):
+    """The deck with adaptive steps: LAMMPS's fix dt/reset (steps up to hmax, no sphere moving
+    more than xmax per step; the skin 0.3 must be at least 2 xmax), run until t = T."""
+    deck = deck.replace("timestep        0.02\n",
+                        "timestep        0.02\nfix             dtr all dt/reset 1 0.002 %r %r units box\n"
+                        "variable        t equal time\n" % (hmax, xmax))
+    lines = deck.splitlines()
+    at = max(k for k, ln in enumerate(lines) if ln.startswith("run "))
+    steps = int(lines[at].split()[1])
+    lines[at:at + 1] = ["fix             upto all halt 1 v_t >= %r error continue message no" % T,
+                        "run             %d" % (100 * steps)]
+    return "\n".join(lines) + "\n"
+
+
 def soft_deck(scene, data, overlap, T):
     d, m = scene["mean_d"], scene["mean_mass"]
     v = max(1.0, math.sqrt(2.0 * (scenes.SPACING - scenes.D_MIN) * scene["layers"]))
@@ -136,6 +150,10 @@ def main():
         extra = "cone " + cone if cone else ""
         runs.append((rid, "hard", hard_deck(scene, str(data), solver, tol, h, T, extra),
                      dict(solver=solver + ("/" + cone if cone else ""), tol=tol, h=h)))
+    # adaptive steps (fix dt/reset): up to 0.08, at most 0.1 d per step, the default solver
+    rid = "hybrid_tol0.01_dtreset0.08"
+    runs.append((rid, "hard", adaptive(hard_deck(scene, str(data), "hybrid", 1e-2, 0.02, T), 0.08,
+                                       0.1, T), dict(solver="hybrid/dt-reset", tol=1e-2, h=0.08)))
     for ov in (1e-2, 1e-3):
         # hertz_params sets the static overlap of a pair under a column's load relative to d;
         # the deepest contact is the floor's, relative to its size r: d/2 per unit
