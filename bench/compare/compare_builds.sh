@@ -17,7 +17,8 @@ WORK="${BENCH_WORKDIR:-$ROOT/bench/work}/compare"
 mkdir -p "$WORK"; cd "$WORK"
 EXTRA="${COMPARE_EXTRA:-}"
 sed "s/hardcontact solver \${solver} wall/hardcontact solver \${solver} $EXTRA wall/" "$HERE/in.pile3d" > in.pile3d
-thermo() { awk '/^ *Step/{f=1;next} /^Loop/{f=0} f' "$1"; }
+# the thermo rows (warnings name source lines, which a change may move)
+thermo() { awk '/^ *Step/{f=1;next} /^Loop/{f=0} f && !/^WARNING/' "$1"; }
 count() { sed -n 's/.*Collected : \([0-9]*\).*/\1/p' "$1"; }
 echo "solver  steps  old_instructions  new_instructions  new/old  thermo"
 for solver in ${COMPARE_SOLVERS:-apgd pgs uzawa}; do

@@ -37,7 +37,7 @@ void velocities(benchmark::State &state, ContactLaw law)
   op.bind(lp.p, ops);
   std::vector<Vec3> u;
   for (auto _ : state) {
-    op.velocities<Law::block>(lp.warm, u);
+    op.velocities<Law>(lp.warm, u);
     benchmark::DoNotOptimize(u.data());
     benchmark::ClobberMemory();
   }
@@ -56,7 +56,7 @@ void gaps(benchmark::State &state, ContactLaw law)
   const int nc = lp.p.n_contacts();
   std::vector<double> g(static_cast<size_t>(B) * nc);
   for (auto _ : state) {
-    for (int c = 0; c < nc; ++c) op.gap_block<B>(c, lp.u, &g[static_cast<size_t>(B) * c]);
+    for (int c = 0; c < nc; ++c) op.gap_block<Law>(c, lp.u, &g[static_cast<size_t>(B) * c]);
     benchmark::DoNotOptimize(g.data());
     benchmark::ClobberMemory();
   }

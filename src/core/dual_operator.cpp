@@ -1,5 +1,7 @@
 #include "dual_operator.h"
 
+#include "laws/law_list.h"
+
 #include <algorithm>
 #include <stdexcept>
 #include <utility>
@@ -57,42 +59,39 @@ Eigen::SparseMatrix<double> DualOperator::assembled() const
   return A;
 }
 
-template <int B>
+template <class Law>
 void DualOperator::forces(const std::vector<double> &mu, std::vector<Vec3> &force,
                           std::vector<Vec3> *torque) const
 {
+  constexpr int B = Law::block;
   const ContactProblem &p = *p_;
   force.assign(p.n_bodies(), Vec3::Zero());
   if (torque) torque->assign(p.n_bodies(), Vec3::Zero());
   const int nc = p.n_contacts();
+  Vec3 unused[4];    // what a body not owned here (or a wall) would receive
   for (int c = 0; c < nc; ++c) {
     const double *m = &mu[static_cast<size_t>(B) * c];
     if (!nonzero<B>(m)) continue;
-    Vec3 f = m[0] * p.normal[c];
-    if constexpr (B > 1) f += m[1] * p.tangent1[c] + m[2] * p.tangent2[c];
     const int i = p.body_i[c], j = p.body_j[c];
-    if (i < p.n_owned) force[i] -= f;
-    if (j >= 0 && j < p.n_owned) force[j] += f;
+    const bool own_i = i < p.n_owned, own_j = j >= 0 && j < p.n_owned;
+    Vec3 &fi = own_i ? force[i] : unused[0];
+    Vec3 &fj = own_j ? force[j] : unused[1];
     if constexpr (B > 1) {
-      if (!torque) continue;
-      // the force on j acts at -a_j n, its opposite on i at +a_i n (apply_block)
-      const Vec3 turn = p.normal[c].cross(f);
-      if (i < p.n_owned) (*torque)[i] -= p.arm_i[c] * turn;
-      if (j >= 0 && j < p.n_owned) (*torque)[j] -= p.arm_j[c] * turn;
-      if constexpr (B == 5) {
-        const Vec3 twist = p.rolling_radius(c) * (m[3] * p.tangent1[c] + m[4] * p.tangent2[c]);
-        if (i < p.n_owned) (*torque)[i] -= twist;
-        if (j >= 0 && j < p.n_owned) (*torque)[j] += twist;
+      if (torque) {
+        Law::add_forces(p, c, m, fi, fj, own_i ? &(*torque)[i] : &unused[2],
+                        own_j ? &(*torque)[j] : &unused[3]);
+        continue;
       }
     }
+    Law::add_forces(p, c, m, fi, fj, nullptr, nullptr);
   }
 }
-template void DualOperator::forces<1>(const std::vector<double> &, std::vector<Vec3> &,
-                                      std::vector<Vec3> *) const;
-template void DualOperator::forces<3>(const std::vector<double> &, std::vector<Vec3> &,
-                                      std::vector<Vec3> *) const;
-template void DualOperator::forces<5>(const std::vector<double> &, std::vector<Vec3> &,
-                                      std::vector<Vec3> *) const;
+
+#define HARDCONTACT_DETAIL_FORCES(Law, Enumerator, Suffix, unused)                                \
+  template void DualOperator::forces<Law>(const std::vector<double> &, std::vector<Vec3> &,     \
+                                          std::vector<Vec3> *) const;                           \
+  template void contact_forces<Law>(const ContactProblem &, const std::vector<double> &,        \
+                                    std::vector<Vec3> &, std::vector<Vec3> *);
 
 double dual_operator_bound(const ContactProblem &p, const std::vector<int> &rows,
                            DistributedOps &ops)
@@ -109,20 +108,15 @@ double dual_operator_bound(const ContactProblem &p, DistributedOps &ops)
   return dual_operator_bound(p, all, ops);
 }
 
-template <int B>
+template <class Law>
 void contact_forces(const ContactProblem &p, const std::vector<double> &mu,
                     std::vector<Vec3> &force, std::vector<Vec3> *torque)
 {
   SerialOps none;    // forces need no communication
   DualOperator op;
   op.bind(p, none);
-  op.forces<B>(mu, force, torque);
+  op.forces<Law>(mu, force, torque);
 }
-template void contact_forces<1>(const ContactProblem &, const std::vector<double> &,
-                                std::vector<Vec3> &, std::vector<Vec3> *);
-template void contact_forces<3>(const ContactProblem &, const std::vector<double> &,
-                                std::vector<Vec3> &, std::vector<Vec3> *);
-template void contact_forces<5>(const ContactProblem &, const std::vector<double> &,
-                                std::vector<Vec3> &, std::vector<Vec3> *);
+HARDCONTACT_LAWS_WITH(HARDCONTACT_DETAIL_FORCES, ~)
 
 }    // namespace hardcontact

@@ -59,10 +59,7 @@ double clearing_work(const ContactProblem &p, const std::vector<double> &mu, int
 template <class Law>
 Coefficients law_coefficients(const ContactProblem &p, int c)
 {
-  Coefficients k;
-  if constexpr (Law::block > 1) k.friction = p.friction[c];
-  if constexpr (Law::block > 3) k.rolling = p.rolling[c];
-  return k;
+  return Law::coefficients(p, c);
 }
 
 // Largest Law::violation over all rows of all processes, at u = u(mu) (op bound to the
@@ -77,7 +74,7 @@ double residual(const DualOperator &op, const std::vector<double> &mu,
   double g[B];
   const int nc = p.n_contacts();
   for (int c = 0; c < nc; ++c) {
-    op.gap_block<B>(c, u, g);
+    op.gap_block<Law>(c, u, g);
     const double v = Law::violation(g, &mu[static_cast<size_t>(B) * c],
                                     law_coefficients<Law>(p, c), scale[c]);
     r = r > v ? r : v;

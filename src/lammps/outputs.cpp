@@ -63,11 +63,12 @@ void Outputs::start_of_run(const ContactProblem &p, const WallGaps &walls,
 }
 
 void Outputs::record_step(const StepResult &r, const ContactProblem &p,
-                          const std::vector<double> &mu, int block, const std::vector<Vec3> &u,
-                          const WallGaps &walls, const SolverSettings &settings)
+                          const std::vector<double> &mu, ContactLaw law,
+                          const std::vector<Vec3> &u, const WallGaps &walls,
+                          const SolverSettings &settings)
 {
   record_solve(r, settings);
-  per_atom_and_local(p, mu, block, u);
+  per_atom_and_local(p, mu, law, u);
   overlap_diagnostics(p, &u, update->dt, walls);
 }
 
@@ -108,14 +109,16 @@ void Outputs::end_of_run(const SolverSettings &settings)
 // A row is counted once over all processes (ContactProblem::counted): a pair across processes
 // is held by both, and counted by the side whose atom has the smaller ID.
 void Outputs::per_atom_and_local(const ContactProblem &p, const std::vector<double> &mu,
-                                 int block, const std::vector<Vec3> &u)
+                                 ContactLaw law, const std::vector<Vec3> &u)
 {
   const int nlocal = atom->nlocal;
   const int nc = p.n_contacts();
   double **array_atom = fix_->array_atom;
-  if (block == 5) contact_forces<5>(p, mu, force_, &torque_);
-  else if (block == 3) contact_forces<3>(p, mu, force_, &torque_);
-  else contact_forces<1>(p, mu, force_);
+  const int block = law_block(law);
+  with_law(law, [&](auto rows_law) {
+    using Law = decltype(rows_law);
+    contact_forces<Law>(p, mu, force_, Law::block > 1 ? &torque_ : nullptr);
+  });
   auto normal_force = [&](int c) { return mu[static_cast<size_t>(block) * c]; };
 
   for (int i = 0; i < nlocal; ++i) {
@@ -146,17 +149,12 @@ void Outputs::per_atom_and_local(const ContactProblem &p, const std::vector<doub
     if (here) {
       counts[1] += 1.0;
       if (listed(j)) ++nrows;
-      if (block > 1) {
-        const double *m = &mu[static_cast<size_t>(block) * c];
-        const Vec3 ft = m[1] * p.tangent1[c] + m[2] * p.tangent2[c];
-        const Vec3 slip = 0.5 * (p.slip_velocity(c, u) + p.slip_velocity(c, u_free_));
-        counts[2] -= p.h * ft.dot(slip);
-        if (block == 5) {    // rolling resistance: -h m_r . R (w_j - w_i), mean spin
-          const Vec3 fr = m[3] * p.tangent1[c] + m[4] * p.tangent2[c];
-          const Vec3 roll = 0.5 * (p.relative_spin(c, u) + p.relative_spin(c, u_free_));
-          counts[2] -= p.h * p.rolling_radius(c) * fr.dot(roll);
-        }
-      }
+      if (block > 1)    // each disc's work: -h m_q . (its mean rate), laws/disc_rows.h
+        with_law(law, [&](auto rows_law) {
+          using Law = decltype(rows_law);
+          if constexpr (Law::block > 1)
+            Law::subtract_work(p, c, &mu[static_cast<size_t>(block) * c], u, u_free_, counts[2]);
+        });
     }
   }
   double all[3];

@@ -7,6 +7,7 @@
 
 #include "step.h"
 
+#include "../core/laws/law_list.h"
 #include "../core/plane_wall.h"
 
 #include "pointers.h"
@@ -57,7 +58,7 @@ class Outputs : protected LAMMPS_NS::Pointers {
   // After the solve of a step, before the atoms move: all outputs of the step.
   // mu: block values per row (1, or 3 with friction).
   void record_step(const StepResult &r, const ContactProblem &p, const std::vector<double> &mu,
-                   int block, const std::vector<Vec3> &u, const WallGaps &walls,
+                   ContactLaw law, const std::vector<Vec3> &u, const WallGaps &walls,
                    const SolverSettings &settings);
   void end_of_run(const SolverSettings &settings);
 
@@ -65,7 +66,7 @@ class Outputs : protected LAMMPS_NS::Pointers {
   void record_solve(const StepResult &r, const SolverSettings &settings);
   void overlap_diagnostics(const ContactProblem &p, const std::vector<Vec3> *u, double h,
                            const WallGaps &walls);
-  void per_atom_and_local(const ContactProblem &p, const std::vector<double> &mu, int block,
+  void per_atom_and_local(const ContactProblem &p, const std::vector<double> &mu, ContactLaw law,
                           const std::vector<Vec3> &u);
 
   LAMMPS_NS::Fix *fix_;

@@ -259,7 +259,9 @@ TEST(Friction, ConesOnRandomPackings)
       for (int r = 0; r < c.p.n_contacts(); ++r) {
         const double gap = c.p.predicted_gap(r, s.u);
         EXPECT_GE(gap, -2.0 * tol * c.p.size[r]) << name;
-        if (s.mu[3 * r] > 0.0) EXPECT_LE(gap, 5.0 * tol * c.p.size[r]) << name << " row " << r;
+        if (s.mu[3 * r] > 0.0) {
+          EXPECT_LE(gap, 5.0 * tol * c.p.size[r]) << name << " row " << r;
+        }
       }
     }
     for (const char *name : {"hybrid", "apgd", "pgs", "uzawa"}) {

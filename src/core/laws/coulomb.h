@@ -16,6 +16,6 @@
 namespace hardcontact {
 
 // one disc: the tangential force, |m_t| <= friction m_n
-using CoulombLaw = DiscLaw<1>;
+using CoulombLaw = DiscLaw<TangentialDisc>;
 
 }    // namespace hardcontact

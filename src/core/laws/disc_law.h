@@ -4,27 +4,160 @@
 // with coef_0 the friction coefficient (the tangential disc, coulomb.h) and coef_1 the rolling
 // one (rolling.h). The dual cone of K is {g_n >= sum_q coef_q |g_q|}: De Saxce's shift is
 // sum_q coef_q |g_q|, which makes a sliding or rolling contact keep g_n = 0 and dissipate
-// sum_q coef_q m_n |g_q| / h. CoulombLaw is DiscLaw<1>, RollingLaw DiscLaw<2>.
+// sum_q coef_q m_n |g_q| / h. CoulombLaw is DiscLaw<TangentialDisc>, RollingLaw
+// DiscLaw<TangentialDisc, RollingDisc>. The law owns its rows of G through its discs
+// (disc_rows.h): DualOperator calls gap_block, apply_block, block_diagonals, block_diagonal
+// and add_forces below, whatever the discs.
 #pragma once
 
+#include "disc_rows.h"
 #include "law.h"
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 namespace hardcontact {
 
-template <int Discs>
+template <class... Discs>
 struct DiscLaw {
-  static_assert(Discs >= 1 && Discs <= 2, "Coefficients holds a friction and a rolling coefficient");
-  static constexpr int block = 1 + 2 * Discs;
+  static constexpr int discs = sizeof...(Discs);
+  static_assert(discs >= 1, "a frictional law has its tangential disc");
+  static_assert(((Discs::size == 2) && ...), "the projections below take discs of 2 components");
+  static constexpr int block = 1 + (Discs::size + ...);
   // values a contact keeps between steps (the contact history): the force (normal and
   // tangential) and each further disc's force as box-frame vectors, which survive a new
   // tangent frame
-  static constexpr int history = 3 * Discs;
+  static constexpr int history = 3 * discs;
 
   // disc q's coefficient: friction for the tangential disc, rolling for the rolling one
-  static double coefficient(const Coefficients &k, int q) { return q == 0 ? k.friction : k.rolling; }
+  static double coefficient(const Coefficients &k, int q)
+  {
+    const double coef[discs] = {Discs::coefficient(k)...};
+    return coef[q];
+  }
+  // The row's coefficients from the problem (each disc's).
+  static Coefficients coefficients(const ContactProblem &p, int c)
+  {
+    Coefficients k;
+    ((Discs::coefficient(k) = Discs::row_coefficient(p, c)), ...);
+    return k;
+  }
+  // f(disc, offset of its first component in the block), for each disc in order
+  template <class F>
+  static void each_disc(F &&f)
+  {
+    each_disc(f, std::index_sequence_for<Discs...>{});
+  }
+
+  // ---- the rows of G (DualOperator) --------------------------------------------------------
+  // The B components of h G_c u + D_c: the gap, then each disc's (h t_k . v_slip, ...).
+  static void gap_block(const ContactProblem &p, int c, const std::vector<Vec3> &u, double *g)
+  {
+    const Vec3 v = p.h * p.slip_velocity(c, u);
+    g[0] = p.gap[c] + p.normal[c].dot(v);
+    each_disc([&](auto disc, int at) { decltype(disc)::gap(p, c, u, v, g + at); });
+  }
+  // Adds the velocity change of the impulse h (m_n n + the discs' forces) to the owned bodies
+  // of row c: the force acts on j at -a_j n and its opposite on i at +a_i n (the arms), so
+  // both spin by -a I^-1 n x impulse; then the discs' own torques.
+  static void apply_block(const ContactProblem &p, int c, const double *dm, std::vector<Vec3> &u)
+  {
+    Vec3 f = dm[0] * p.normal[c];
+    each_disc([&](auto disc, int at) { decltype(disc)::add_linear(p, c, dm + at, f); });
+    const Vec3 impulse = p.h * f;
+    const int i = p.body_i[c], j = p.body_j[c], nb = p.n_bodies();
+    const Vec3 turn = p.normal[c].cross(impulse);
+    if (i < p.n_owned) {
+      u[i] -= p.inv_mass[i] * impulse;
+      if (p.rotates()) u[nb + i] -= (p.inv_inertia[i] * p.arm_i[c]) * turn;
+    }
+    if (j >= 0 && j < p.n_owned) {
+      u[j] += p.inv_mass[j] * impulse;
+      if (p.rotates()) u[nb + j] -= (p.inv_inertia[j] * p.arm_j[c]) * turn;
+    }
+    if constexpr ((Discs::own_torque || ...)) {
+      const bool own_i = i < p.n_owned, own_j = j >= 0 && j < p.n_owned;
+      Vec3 *spin_i = own_i ? &u[nb + i] : nullptr, *spin_j = own_j ? &u[nb + j] : nullptr;
+      each_disc([&](auto disc, int at) {
+        decltype(disc)::push_spins(p, c, dm + at, p.h, i, j, spin_i, spin_j);
+      });
+    }
+  }
+  // The diagonal of the block A_cc, d[0..B): the normal entry h^2 (w_i + w_j), then each
+  // disc's (equal within a disc; couplings between discs through the spins are not in it).
+  static void block_diagonals(const ContactProblem &p, int c, double *d)
+  {
+    const int i = p.body_i[c], j = p.body_j[c];
+    const RowBodies b{i, j, is_wall(j), p.h * p.h};
+    d[0] = b.h2 * (p.inv_mass[i] + (b.wall ? 0.0 : p.inv_mass[j]));
+    each_disc([&](auto disc, int at) { decltype(disc)::diagonals(p, c, b, d + at); });
+  }
+  // At least the largest eigenvalue of A_cc: with the tangential disc alone the block is
+  // diagonal and this is its largest entry; with discs coupled through the spins, the trace
+  // (A_cc >= 0): per body 3 w (the normal and the two tangential rows) + (1 / I) sum of the
+  // discs' angular shares.
+  static double block_diagonal(const ContactProblem &p, int c)
+  {
+    if constexpr (discs == 1) {
+      return TangentialDisc::largest(p, c);
+    } else {
+      const int i = p.body_i[c], j = p.body_j[c];
+      const auto body = [&](int b, double arm) {
+        double angular = 0.0;
+        each_disc([&](auto disc, int) { angular += decltype(disc)::angular_trace(p, c, arm); });
+        return 3.0 * p.inv_mass[b] + p.inv_inertia[b] * angular;
+      };
+      double t = body(i, p.arm_i[c]);
+      if (!is_wall(j)) t += body(j, p.arm_j[c]);
+      return p.h * p.h * t;
+    }
+  }
+  // Raises d (block_diagonals) by the couplings between discs through the spins, so that it
+  // dominates the block (nsgs's damped local solves): each coupled disc's entries and the
+  // tangential ones by its coupling.
+  static void dominate_couplings(const ContactProblem &p, int c, double *d)
+  {
+    each_disc([&](auto disc, int at) {
+      using Disc = decltype(disc);
+      if constexpr (Disc::coupled) {
+        const double couple = Disc::coupling(p, c);
+        for (int k = 1; k < 1 + TangentialDisc::size; ++k) d[k] += couple;
+        for (int k = at; k < at + Disc::size; ++k) d[k] += couple;
+      }
+    });
+  }
+  // The force of m on j (its opposite on i), and with torque the torques (forces per body).
+  static void add_forces(const ContactProblem &p, int c, const double *m, Vec3 &force_i,
+                         Vec3 &force_j, Vec3 *torque_i, Vec3 *torque_j)
+  {
+    Vec3 f = m[0] * p.normal[c];
+    each_disc([&](auto disc, int at) { decltype(disc)::add_linear(p, c, m + at, f); });
+    force_i -= f;
+    force_j += f;
+    if (torque_i == nullptr) return;
+    // the force on j acts at -a_j n, its opposite on i at +a_i n (apply_block)
+    const Vec3 turn = p.normal[c].cross(f);
+    *torque_i -= p.arm_i[c] * turn;
+    *torque_j -= p.arm_j[c] * turn;
+    each_disc([&](auto disc, int at) { decltype(disc)::add_torque(p, c, m + at, *torque_i, *torque_j); });
+  }
+  // Subtracts from dissipated the work of each disc's force over the step, h m_q . (mean
+  // rate), one disc at a time (u, u_free: [lin; ang] velocities at the end and free).
+  static void subtract_work(const ContactProblem &p, int c, const double *m,
+                            const std::vector<Vec3> &u, const std::vector<Vec3> &u_free,
+                            double &dissipated)
+  {
+    each_disc([&](auto disc, int at) {
+      dissipated -= decltype(disc)::work(p, c, m + at, u, u_free);
+    });
+  }
+  // apgd's preconditioned variables x = D^1/2 m (d = block_diagonals): the discs'
+  // coefficients scale by sqrt(d_q / d_n), the cone keeps its form.
+  static void scale_coefficients(Coefficients &k, const double *d)
+  {
+    each_disc([&](auto disc, int at) { decltype(disc)::coefficient(k) *= std::sqrt(d[at] / d[0]); });
+  }
 
   // Euclidean projection onto K. One disc: itself inside, 0 in the polar cone
   // (coef |t| <= -n), else onto the cone's surface along the normal of the boundary. Several:
@@ -34,33 +167,33 @@ struct DiscLaw {
   // active; try the 2^D pieces.
   static void project(double *m, const Coefficients &k)
   {
-    if constexpr (Discs == 1) {
+    if constexpr (discs == 1) {
       project_cone(m, k.friction);
     } else {
       const double n = m[0];
-      double coef[Discs], len[Discs];
-      for (int q = 0; q < Discs; ++q) {
+      double coef[discs], len[discs];
+      for (int q = 0; q < discs; ++q) {
         coef[q] = coefficient(k, q);
         len[q] = norm2(m[1 + 2 * q], m[2 + 2 * q]);
       }
       int outside = 0;
-      while (outside < Discs && len[outside] <= coef[outside] * n) ++outside;
-      if (outside == Discs) return;    // inside (n >= 0)
+      while (outside < discs && len[outside] <= coef[outside] * n) ++outside;
+      if (outside == discs) return;    // inside (n >= 0)
       // The minimiser is the root of the consistent piece; each piece's root is a candidate
       // and f picks among them (and 0): a point on or within round-off of several discs' edges
       // may find no piece consistent to the bit, and was sent to 0.
       const auto f = [&](double at) {
         double v = (at - n) * (at - n);
-        for (int q = 0; q < Discs; ++q) {
+        for (int q = 0; q < discs; ++q) {
           const double over = len[q] - coef[q] * at;
           if (over > 0.0) v += over * over;
         }
         return v;
       };
       double best = 0.0, best_f = f(0.0);
-      for (int set = 1; set < (1 << Discs); ++set) {    // bit q: disc q outside at the root
+      for (int set = 1; set < (1 << discs); ++set) {    // bit q: disc q outside at the root
         double num = n, den = 1.0;
-        for (int q = 0; q < Discs; ++q)
+        for (int q = 0; q < discs; ++q)
           if (set & (1 << q)) {
             num += coef[q] * len[q];
             den += coef[q] * coef[q];
@@ -74,7 +207,7 @@ struct DiscLaw {
         }
       }
       m[0] = best;
-      for (int q = 0; q < Discs; ++q) {
+      for (int q = 0; q < discs; ++q) {
         double *v = m + 1 + 2 * q;
         const double cap = coef[q] * best;
         if (len[q] > cap) {
@@ -123,20 +256,20 @@ struct DiscLaw {
   static double violation(const double *g, const double *m, const Coefficients &k, double scale,
                           double &shift, double floor)
   {
-    double coef[Discs], gl[Discs];
-    for (int q = 0; q < Discs; ++q) {
+    double coef[discs], gl[discs];
+    for (int q = 0; q < discs; ++q) {
       coef[q] = coefficient(k, q);
       gl[q] = norm2(g[1 + 2 * q], g[2 + 2 * q]);
     }
     shift = coef[0] * gl[0];
-    for (int q = 1; q < Discs; ++q) shift += coef[q] * gl[q];
+    for (int q = 1; q < discs; ++q) shift += coef[q] * gl[q];
     if (m[0] <= 0.0) {
       const double v = shift - g[0];
       return (v > 0.0 ? v : 0.0) / scale;
     }
-    double ps[2 * Discs] = {};    // m_q / cap (0: no bound on the disc)
+    double ps[2 * discs] = {};    // m_q / cap (0: no bound on the disc)
     double bn = std::abs(g[0]), bt = 0.0;
-    for (int q = 0; q < Discs; ++q) {
+    for (int q = 0; q < discs; ++q) {
       const double cap = coef[q] * m[0];
       if (cap <= 0.0) continue;    // no bound on this disc: no condition (frictionless row)
       ps[2 * q] = m[1 + 2 * q] / cap;
@@ -147,7 +280,7 @@ struct DiscLaw {
     }
     if (std::max(bn, bt) / scale * (1.0 + 1e-12) <= floor) return floor;
     double dn = g[0], worst = 0.0;
-    for (int q = 0; q < Discs; ++q) {
+    for (int q = 0; q < discs; ++q) {
       const double cap = coef[q] * m[0];
       if (cap <= 0.0) continue;
       const double p1 = ps[2 * q], p2 = ps[2 * q + 1];
@@ -162,7 +295,7 @@ struct DiscLaw {
   static double shift(const double *g, const Coefficients &k)
   {
     double s = coefficient(k, 0) * norm2(g[1], g[2]);
-    for (int q = 1; q < Discs; ++q) s += coefficient(k, q) * norm2(g[1 + 2 * q], g[2 + 2 * q]);
+    for (int q = 1; q < discs; ++q) s += coefficient(k, q) * norm2(g[1 + 2 * q], g[2 + 2 * q]);
     return s;
   }
 
@@ -187,7 +320,7 @@ struct DiscLaw {
       return;
     }
     m[0] = n;
-    for (int q = 0; q < Discs; ++q)
+    for (int q = 0; q < discs; ++q)
       disc(m + 1 + 2 * q, g + 1 + 2 * q, d[1 + 2 * q], coefficient(k, q) * n);
   }
   // The same local problem on the unshifted cone (SolverSettings::Cone::Convex): the point of
@@ -203,8 +336,7 @@ struct DiscLaw {
       y[q] = root[q] * (m[q] - g[q] / d[q]);
     }
     Coefficients scaled = k;
-    scaled.friction *= root[1] / root[0];
-    if constexpr (Discs > 1) scaled.rolling *= root[3] / root[0];
+    each_disc([&](auto disc, int at) { decltype(disc)::coefficient(scaled) *= root[at] / root[0]; });
     project(y, scaled);
     for (int q = 0; q < block; ++q) m[q] = y[q] / root[q];
   }
@@ -217,6 +349,19 @@ struct DiscLaw {
     const double f = len > cap ? cap / len : 1.0;
     v[0] = a * f;
     v[1] = b * f;
+  }
+
+ private:
+  template <class F, size_t... Q>
+  static void each_disc(F &f, std::index_sequence<Q...>)
+  {
+    constexpr int sizes[discs] = {Discs::size...};
+    const auto offset = [&](size_t q) {
+      int at = 1;
+      for (size_t k = 0; k < q; ++k) at += sizes[k];
+      return at;
+    };
+    (f(Discs{}, offset(Q)), ...);
   }
 };
 

@@ -28,6 +28,9 @@
   using Family##Suffix = Template<Law>;
 #define HARDCONTACT_DETAIL_INSTANTIATE(Law, Enumerator, Suffix, Template) template class Template<Law>;
 
+#define HARDCONTACT_DETAIL_WITH_LAW(Law, Enumerator, Suffix, unused) \
+  case ContactLaw::Enumerator: return f(Law{});
+
 // using <Family><Suffix> = <Template><Law>; for every law (in a solver's header).
 #define HARDCONTACT_SOLVER_ALIASES(Family, Template) \
   HARDCONTACT_LAWS_WITH(HARDCONTACT_DETAIL_ALIAS, Family, Template)
@@ -51,6 +54,16 @@ constexpr int law_block(ContactLaw law)
     HARDCONTACT_LAWS_WITH(HARDCONTACT_DETAIL_BLOCK, ~)
   }
   return NormalLaw::block;
+}
+
+// f(Law{}) for the law named at run time (a generic lambda sees the law's type).
+template <class F>
+decltype(auto) with_law(ContactLaw law, F &&f)
+{
+  switch (law) {
+    HARDCONTACT_LAWS_WITH(HARDCONTACT_DETAIL_WITH_LAW, ~)
+  }
+  return f(NormalLaw{});
 }
 
 // Values a contact keeps between steps under a law (the contact history, per contact).

@@ -2,6 +2,7 @@
 // complementary to the predicted gap g >= 0 (law.h: the interface every law follows).
 #pragma once
 
+#include "../contact_problem.h"
 #include "law.h"
 
 namespace hardcontact {
@@ -28,6 +29,34 @@ struct NormalLaw {
     return violation(g[0], m[0], scale);
   }
   static double shift(const double *, const Coefficients &) { return 0.0; }
+
+  // Its row of G (DualOperator): G_c = grad D_c, -n_c on body i, +n_c on body j (eq. 1).
+  static Coefficients coefficients(const ContactProblem &, int) { return {}; }
+  // g_c(u) = D_c + h G_c u, eq. 15
+  static void gap_block(const ContactProblem &p, int c, const std::vector<Vec3> &u, double *g)
+  {
+    g[0] = p.predicted_gap(c, u);
+  }
+  // u_i -= w_i h dm n_c, u_j += w_j h dm n_c on the owned bodies
+  static void apply_block(const ContactProblem &p, int c, const double *dm, std::vector<Vec3> &u)
+  {
+    RowKernel(p).apply(c, dm[0], doubles(u));
+  }
+  // A_cc = h^2 (w_i + w_j): the exact step along one row (Gauss-Seidel)
+  static double block_diagonal(const ContactProblem &p, int c)
+  {
+    const int j = p.body_j[c];
+    return p.h * p.h * (p.inv_mass[p.body_i[c]] + (is_wall(j) ? 0.0 : p.inv_mass[j]));
+  }
+  static void block_diagonals(const ContactProblem &p, int c, double *d) { d[0] = block_diagonal(p, c); }
+  // the force m n_c on j, its opposite on i (no torque: the normal passes through the centres)
+  static void add_forces(const ContactProblem &p, int c, const double *m, Vec3 &force_i,
+                         Vec3 &force_j, Vec3 *, Vec3 *)
+  {
+    const Vec3 f = m[0] * p.normal[c];
+    force_i -= f;
+    force_j += f;
+  }
 
   // The exact solve of one row with the others held (nonsmooth Gauss-Seidel, solvers/nsgs.h):
   // g the row's gap at m, d its diagonal entry of A (or a larger one, for a damped step).

@@ -14,6 +14,6 @@
 namespace hardcontact {
 
 // two discs: the tangential force, then the rolling force, |m_r| <= rolling m_n
-using RollingLaw = DiscLaw<2>;
+using RollingLaw = DiscLaw<TangentialDisc, RollingDisc>;
 
 }    // namespace hardcontact

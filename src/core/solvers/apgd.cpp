@@ -22,7 +22,7 @@ template <class Law>
 void ApgdSolver<Law>::gaps(const std::vector<double> &m, std::vector<double> &g,
                            std::vector<Vec3> &u)
 {
-  this->op_.template velocities<B>(this->set_.rows(), m, u);
+  this->op_.template velocities<Law>(this->set_.rows(), m, u);
   for (const int c : this->set_.rows()) this->gradient_block(c, u, &g[static_cast<size_t>(B) * c]);
 }
 
@@ -54,20 +54,23 @@ void ApgdSolver<Law>::precondition(const SolverSettings &s)
     const int nc = this->op_.problem().n_contacts();
     d_.resize(static_cast<size_t>(B) * nc);
     sd_.resize(d_.size());
+    isd_.resize(d_.size());
     kd_.resize(nc);
     dmax_ = 0.0;
     for (int c = 0; c < nc; ++c) {
       double *d = &d_[static_cast<size_t>(B) * c];
       Coefficients k = this->coef(c);
-      this->op_.template block_diagonals<B>(c, d);
-      if (s.rho > 0.0 || !(d[0] > 0.0) || !(d[1] > 0.0) || (B == 5 && !(d[B - 1] > 0.0)))
+      this->op_.template block_diagonals<Law>(c, d);
+      bool movable = true;
+      for (int q = 0; q < B; ++q) movable = movable && d[q] > 0.0;
+      if (s.rho > 0.0 || !movable)
         for (int q = 0; q < B; ++q) d[q] = 1.0;    // fixed step, or a row no body can move
       for (int q = 0; q < B; ++q) {
         sd_[static_cast<size_t>(B) * c + q] = std::sqrt(d[q]);
+        isd_[static_cast<size_t>(B) * c + q] = 1.0 / sd_[static_cast<size_t>(B) * c + q];
         dmax_ = std::max(dmax_, d[q]);
       }
-      k.friction *= std::sqrt(d[1] / d[0]);
-      if constexpr (B == 5) k.rolling *= std::sqrt(d[3] / d[0]);
+      Law::scale_coefficients(k, d);
       kd_[c] = k;
     }
   }
@@ -90,7 +93,7 @@ void ApgdSolver<Law>::start(const SolverSettings &s, std::vector<double> &mu,
   std::fill(this->g_.begin(), this->g_.end(), 0.0);
   this->op_.free_velocities(u);
   for (int c = 0; c < nc; ++c)
-    this->op_.template gap_block<B>(c, u, &b_[static_cast<size_t>(B) * c]);
+    this->op_.template gap_block<Law>(c, u, &b_[static_cast<size_t>(B) * c]);
   gaps(mu, this->g_, u);
   // the subspace start, the blocks projected onto the law's set; the shifts stay those of the
   // warm start (the fixed point moves them, as after any start)
@@ -103,7 +106,7 @@ void ApgdSolver<Law>::start(const SolverSettings &s, std::vector<double> &mu,
         });
   if constexpr (B == 1) {
     // Start L below the Gershgorin bound of the working set: backtracking raises it as needed.
-    L_ = s.rho > 0.0 ? 1.0 / s.rho : 0.25 * this->op_.template bound<B>(this->set_.rows());
+    L_ = s.rho > 0.0 ? 1.0 / s.rho : 0.25 * this->op_.template bound<Law>(this->set_.rows());
   } else {
     // D^-1/2 A D^-1/2 has a unit diagonal: 1 <= its largest eigenvalue
     precondition(s);
@@ -130,7 +133,7 @@ void ApgdSolver<Law>::finished(const SolverSettings &s, const std::vector<double
       const size_t a = static_cast<size_t>(B) * c + k;
       d[a] = mu[a] - warm_[a];
     }
-  this->op_.template velocities<B>(rows, d, scratch_u_);
+  this->op_.template velocities<Law>(rows, d, scratch_u_);
   for (const int c : rows) {
     double *q = &ad[static_cast<size_t>(B) * c];
     this->gradient_block(c, scratch_u_, q);
@@ -163,7 +166,7 @@ void ApgdSolver<Law>::grown(const SolverSettings &, std::vector<double> &mu, std
   for (const int c : this->set_.rows())    // u = u(mu)
     this->gradient_block(c, u, &this->g_[static_cast<size_t>(B) * c]);
   gaps(y_, gy_, u);
-  this->op_.template velocities<B>(this->set_.rows(), mu, u);
+  this->op_.template velocities<Law>(this->set_.rows(), mu, u);
   residual_ready_ = false;    // the set is larger
 }
 
@@ -205,7 +208,8 @@ bool ApgdSolver<Law>::step(const SolverSettings &, std::vector<double> &mu, std:
   double sums[5];
   constexpr int kRestartSum = B == 1 ? 4 : 2;
   for (;;) {
-    this->op_.template velocities_with<B>(
+    [[maybe_unused]] const double inv_L = 1.0 / L_;
+    this->op_.template velocities_with<Law>(
         rows,
         [&](int c) {
           double *m = &next_[static_cast<size_t>(B) * c];
@@ -216,13 +220,14 @@ bool ApgdSolver<Law>::step(const SolverSettings &, std::vector<double> &mu, std:
             }
             Law::project(m, this->coef(c));
           } else {
-            // x = D^1/2 (y - D^-1 gy / L), projected, back to mu
+            // x = D^1/2 (y - D^-1 gy / L), projected, back to mu (products with D^-1/2 and
+            // 1/L: divisions were a tenth of a frictional iteration)
             for (int k = 0; k < B; ++k) {
               const size_t a = static_cast<size_t>(B) * c + k;
-              m[k] = sd_[a] * y_[a] - gy_[a] / (L_ * sd_[a]);
+              m[k] = sd_[a] * y_[a] - gy_[a] * (inv_L * isd_[a]);
             }
             Law::project(m, kd_[c]);
-            for (int k = 0; k < B; ++k) m[k] /= sd_[static_cast<size_t>(B) * c + k];
+            for (int k = 0; k < B; ++k) m[k] *= isd_[static_cast<size_t>(B) * c + k];
           }
           return m;
         },
@@ -267,7 +272,7 @@ bool ApgdSolver<Law>::step(const SolverSettings &, std::vector<double> &mu, std:
     L_ *= 2.0;
   }
   if (!(L_ < 1e300)) {    // the estimate broke down: report the iterate, unconverged
-    this->op_.template velocities<B>(rows, mu, u);
+    this->op_.template velocities<Law>(rows, mu, u);
     this->rho_ = report_rho();
     residual_ready_ = false;
     return false;

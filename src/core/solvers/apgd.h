@@ -25,7 +25,7 @@ class ApgdSolver : public IterativeSolver<Law> {
   double memory_usage() const override
   {
     return IterativeSolver<Law>::memory_usage() +
-           bytes_of(d_, sd_, kd_, b_, y_, gy_, next_, gnext_, warm_, scratch_u_) +
+           bytes_of(d_, sd_, isd_, kd_, b_, y_, gy_, next_, gnext_, warm_, scratch_u_) +
            past_.memory_usage();
   }
 
@@ -53,7 +53,7 @@ class ApgdSolver : public IterativeSolver<Law> {
   // Friction (B > 1): the diagonal preconditioner D = diag(A_cc) per component (d_) and its
   // square root (sd_), and each row's law coefficients in the variables x = D^1/2 mu (kd_).
   void precondition(const SolverSettings &s);
-  std::vector<double> d_, sd_;
+  std::vector<double> d_, sd_, isd_;    // D, D^1/2, D^-1/2
   std::vector<Coefficients> kd_;
   double dmax_ = 0.0;
   std::vector<double> b_;       // g at mu = 0 without shifts: the linear term of the dual

@@ -35,7 +35,7 @@ void block_sweep(const DualOperator &op, const std::vector<int> &rows, const std
   for (int q = 0; q < nrows; ++q) {
     const int c = rows[q];
     if (p.body_j[c] < p.n_owned) continue;    // owned pair or wall: swept below
-    const double bound = op.template gershgorin_row<B>(c);
+    const double bound = op.template gershgorin_row<Law>(c);
     if (bound <= 0.0) continue;
     const double *m = &mu[static_cast<size_t>(B) * c];
     const double *gc = &g[static_cast<size_t>(B) * c];
@@ -50,14 +50,14 @@ void block_sweep(const DualOperator &op, const std::vector<int> &rows, const std
     if (!any) continue;
     const int c = rows[q];
     for (int k = 0; k < B; ++k) mu[static_cast<size_t>(B) * c + k] += d[k];
-    op.template apply_block<B>(c, d, u);
+    op.template apply_block<Law>(c, d, u);
   }
   for (const int c : rows) {
     if (p.body_j[c] >= p.n_owned) continue;
-    const double diag = op.template block_diagonal<B>(c);
+    const double diag = op.template block_diagonal<Law>(c);
     if (diag <= 0.0) continue;
     double *m = &mu[static_cast<size_t>(B) * c];
-    op.template gap_block<B>(c, u, step);
+    op.template gap_block<Law>(c, u, step);
     if (shift != nullptr) step[0] += shift[c];
     for (int k = 0; k < B; ++k) next[k] = m[k] - step[k] / diag;
     Law::project(next, law_coefficients<Law>(p, c));
@@ -65,7 +65,7 @@ void block_sweep(const DualOperator &op, const std::vector<int> &rows, const std
       step[k] = next[k] - m[k];    // applied below
       m[k] = next[k];
     }
-    op.template apply_block<B>(c, step, u);
+    op.template apply_block<Law>(c, step, u);
   }
   op.forward(u);
 }

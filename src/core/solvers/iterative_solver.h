@@ -58,11 +58,11 @@ class IterativeSolver : public Solver {
       if (lagged && given_warm_) {    // the warm start as this solve's mu was made from it
         warm_.resize(static_cast<size_t>(B) * nc, 0.0);
         for (int c = 0; c < nc; ++c) Law::project(&warm_[static_cast<size_t>(B) * c], coef(p, c));
-        op_.template velocities<B>(set_.rows(), warm_, u);
+        op_.template velocities<Law>(set_.rows(), warm_, u);
         double g[B];
         for (const int c : set_.rows()) {
           if (!(warm_[static_cast<size_t>(B) * c] > 0.0)) continue;
-          op_.template gap_block<B>(c, u, g);
+          op_.template gap_block<Law>(c, u, g);
           cap_[c] = Law::shift(g, coef(c));
         }
       }
@@ -164,7 +164,7 @@ class IterativeSolver : public Solver {
   // Once per solve, after the working set is made: u = u(mu), and the solver's own state.
   virtual void start(const SolverSettings &s, std::vector<double> &mu, std::vector<Vec3> &u)
   {
-    op_.template velocities<B>(set_.rows(), mu, u);
+    op_.template velocities<Law>(set_.rows(), mu, u);
     rows_changed(s);
   }
   // One iteration from (mu, u = u(mu)) to the next; false if the method broke down.
@@ -236,7 +236,7 @@ class IterativeSolver : public Solver {
   // The B components of row c's gradient at u: h G_c u + D_c, the normal one shifted by s_c.
   void gradient_block(int c, const std::vector<Vec3> &u, double *g) const
   {
-    op_.template gap_block<B>(c, u, g);
+    op_.template gap_block<Law>(c, u, g);
     if constexpr (B > 1) g[0] += shift_[c];
   }
   SolverSettings::Cone cone_ = SolverSettings::Cone::Lagged;    // friction: this solve's cone
@@ -299,11 +299,11 @@ class IterativeSolver : public Solver {
   // with caps_from_start, the caps of the rows pushing there: Cone::Lagged).
   void start_shifts(const std::vector<double> &mu, std::vector<Vec3> &u, bool caps_from_start)
   {
-    op_.template velocities<B>(set_.rows(), mu, u);
+    op_.template velocities<Law>(set_.rows(), mu, u);
     std::vector<double> &shift = shift_;
     double g[B];
     for (const int c : set_.rows()) {
-      op_.template gap_block<B>(c, u, g);
+      op_.template gap_block<Law>(c, u, g);
       const double law = Law::shift(g, coef(c));
       if (caps_from_start && mu[static_cast<size_t>(B) * c] > 0.0) cap_[c] = law;
       shift[c] = cone_ == SolverSettings::Cone::Convex ? 0.0 : capped(c, law);

@@ -22,17 +22,11 @@ void NsgsSolver<Law>::rows_changed(const SolverSettings &)
     double *d = &diag_[static_cast<size_t>(B) * c];
     const bool shared = p.body_j[c] >= p.n_owned;
     if (shared) {
-      const double bound = this->op_.template gershgorin_row<B>(c);
+      const double bound = this->op_.template gershgorin_row<Law>(c);
       for (int k = 0; k < B; ++k) d[k] = bound;
     } else {
-      this->op_.template block_diagonals<B>(c, d);
-      if constexpr (B == 5) {
-        const int i = p.body_i[c], j = p.body_j[c];
-        double couple = p.inv_inertia[i] * p.arm_i[c];
-        if (!is_wall(j)) couple += p.inv_inertia[j] * p.arm_j[c];
-        couple *= p.h * p.h * p.rolling_radius(c);
-        for (int k = 1; k < B; ++k) d[k] += couple;
-      }
+      this->op_.template block_diagonals<Law>(c, d);
+      if constexpr (B > 1) Law::dominate_couplings(p, c, d);
     }
     bool movable = true;
     for (int k = 0; k < B; ++k) movable = movable && d[k] > 0.0;
@@ -44,7 +38,7 @@ void NsgsSolver<Law>::rows_changed(const SolverSettings &)
 template <class Law>
 void NsgsSolver<Law>::true_gradient(int c, const std::vector<Vec3> &u, double *g) const
 {
-  this->op_.template gap_block<B>(c, u, g);
+  this->op_.template gap_block<Law>(c, u, g);
 }
 
 template <class Law>
@@ -61,7 +55,7 @@ void NsgsSolver<Law>::local(int c, std::vector<double> &mu, std::vector<Vec3> &u
     any = any || d[k] != 0.0;
     m[k] = next[k];
   }
-  if (any) this->op_.template apply_block<B>(c, d, u);
+  if (any) this->op_.template apply_block<Law>(c, d, u);
 }
 
 template <class Law>
@@ -84,7 +78,7 @@ bool NsgsSolver<Law>::step(const SolverSettings &, std::vector<double> &mu, std:
     const double *d = &dmu_[static_cast<size_t>(B) * q];
     const int c = shared_[q];
     for (int k = 0; k < B; ++k) mu[static_cast<size_t>(B) * c + k] += d[k];
-    this->op_.template apply_block<B>(c, d, u);
+    this->op_.template apply_block<Law>(c, d, u);
   }
   // owned rows: Gauss-Seidel, forward and backward on alternate sweeps
   if (sweeps_++ % 2 == 0) {

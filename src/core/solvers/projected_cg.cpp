@@ -43,7 +43,7 @@ void ProjectedCg::start(const SolverSettings &s, std::vector<double> &mu, std::v
   // u = u(m) and the gaps g on the set rows
   const auto regap = [&](const std::vector<double> &m, std::vector<double> &g,
                          std::vector<Vec3> &v) {
-    op_.velocities<1>(set_.rows(), m, v);
+    op_.velocities(set_.rows(), m, v);
     for (const int c : set_.rows()) g[c] = op_.gap(c, v);
   };
   regap(mu, g_, u);

@@ -12,7 +12,7 @@ void UzawaSolver<Law>::rows_changed(const SolverSettings &s)
     this->rho_ = s.rho;
     return;
   }
-  const double bound = this->op_.template bound<B>(this->set_.rows());
+  const double bound = this->op_.template bound<Law>(this->set_.rows());
   this->rho_ = bound > 0.0 ? 1.0 / bound : 0.0;
 }
 
@@ -28,7 +28,7 @@ bool UzawaSolver<Law>::step(const SolverSettings &, std::vector<double> &mu,
     for (int k = 0; k < B; ++k) m[k] -= this->rho_ * g[k];
     Law::project(m, this->coef(c));
   }
-  this->op_.template velocities<B>(this->set_.rows(), mu, u);
+  this->op_.template velocities<Law>(this->set_.rows(), mu, u);
   return true;
 }
 

@@ -1,0 +1,159 @@
+// The discs a frictional law composes (disc_law.h), each with its rows of G: what its
+// components read from the bodies' velocities (eq. 15 extended by the contact point's motion)
+// and what its multipliers push (eq. 16), its entries of the block A_cc = h^2 G_c M^-1 G_c^T,
+// the coefficient bounding it and the work it dissipates. DualOperator applies any law through
+// these, without knowing which discs it holds. A new disc is a struct here with the same
+// members and a coefficient in Coefficients (law.h) and ContactProblem.
+//
+// Members (p the problem, c the row, m or g the disc's own components):
+//   size                         components (2: a tangential plane)
+//   coefficient(k)               its bound coef in |m_q| <= coef m_n (a reference: apgd scales it)
+//   row_coefficient(p, c)        the row's coefficient from the problem
+//   gap(p, c, u, v, g)           its components of h G_c u, with v = h v_slip (contact_problem.h)
+//   add_linear(p, c, m, f)       adds the force of its multipliers at the contact point (on j)
+//   own_torque                   true if its multipliers are a torque of their own (else only
+//                                its force's, through the arms)
+//   push_spins(p, c, m, h, i, j, spin_i, spin_j)
+//                                the spins' change of an impulse h m that is a torque of its own
+//                                (spin_i, spin_j: the bodies' spins, null when not owned here)
+//   add_torque(p, c, m, ti, tj)  the same torque, added to the bodies' torques
+//   diagonals(p, c, b, d)        its entries of A_cc (d[0..size)); b: the row's bodies and h^2
+//   angular_trace(p, c, arm)     its rows' share of the trace of A_cc per unit of 1 / I of a body
+//                                whose arm is arm (rows along the arms: 2 arm^2)
+//   coupled, coupling(p, c)      whether the spins couple its rows with the tangential ones, and
+//                                the off-diagonal entries that do (h^2 times)
+//   work(p, c, m, u, u_free)     h m . (its mean rate over the step): what it dissipates
+#pragma once
+
+#include "../contact_problem.h"
+#include "law.h"
+
+namespace hardcontact {
+
+// What every disc's entries of A_cc read, found once per row.
+struct RowBodies {
+  int i, j;
+  bool wall;
+  double h2;    // h^2
+};
+
+// The contact point's slip (t_1, t_2): Coulomb friction, |m_t| <= mu m_n.
+struct TangentialDisc {
+  static constexpr int size = 2;
+  static constexpr bool own_torque = false;
+  static double coefficient(const Coefficients &k) { return k.friction; }
+  static double &coefficient(Coefficients &k) { return k.friction; }
+  static double row_coefficient(const ContactProblem &p, int c) { return p.friction[c]; }
+  static void gap(const ContactProblem &p, int c, const std::vector<Vec3> &, const Vec3 &v,
+                  double *g)
+  {
+    g[0] = p.tangent1[c].dot(v);
+    g[1] = p.tangent2[c].dot(v);
+  }
+  // one term at a time: the sum n m_n + t_1 m_1 + t_2 m_2 in that order
+  static void add_linear(const ContactProblem &p, int c, const double *m, Vec3 &f)
+  {
+    f += m[0] * p.tangent1[c];
+    f += m[1] * p.tangent2[c];
+  }
+  // its torque is the arms' (DualOperator: the force at -a_j n on j, +a_i n on i)
+  static void push_spins(const ContactProblem &, int, const double *, double, int, int, Vec3 *,
+                         Vec3 *)
+  {
+  }
+  static void add_torque(const ContactProblem &, int, const double *, Vec3 &, Vec3 &) {}
+  // h^2 sum (w + a^2 / I) on both: n, t_1, t_2 are orthonormal and n x n = 0, so the block of
+  // the normal and tangential rows is diagonal
+  static void diagonals(const ContactProblem &p, int c, const RowBodies &b, double *d)
+  {
+    double t = p.inv_mass[b.i] + p.inv_inertia[b.i] * p.arm_i[c] * p.arm_i[c];
+    if (!b.wall) t += p.inv_mass[b.j] + p.inv_inertia[b.j] * p.arm_j[c] * p.arm_j[c];
+    d[0] = d[1] = b.h2 * t;
+  }
+  // The largest entry of the block when it is this disc's alone (the tangential entry).
+  static double largest(const ContactProblem &p, int c)
+  {
+    const int i = p.body_i[c], j = p.body_j[c];
+    double d = p.inv_mass[i];
+    if (p.rotates()) d += p.inv_inertia[i] * p.arm_i[c] * p.arm_i[c];
+    if (!is_wall(j)) {
+      d += p.inv_mass[j];
+      if (p.rotates()) d += p.inv_inertia[j] * p.arm_j[c] * p.arm_j[c];
+    }
+    return p.h * p.h * d;
+  }
+  static double angular_trace(const ContactProblem &, int, double arm) { return 2.0 * arm * arm; }
+  static constexpr bool coupled = false;
+  static double coupling(const ContactProblem &, int) { return 0.0; }
+  // h F_t . (mean slip of the step): the work Coulomb's force does (<= 0: it opposes the slip)
+  static double work(const ContactProblem &p, int c, const double *m, const std::vector<Vec3> &u,
+                     const std::vector<Vec3> &u_free)
+  {
+    const Vec3 ft = m[0] * p.tangent1[c] + m[1] * p.tangent2[c];
+    const Vec3 slip = 0.5 * (p.slip_velocity(c, u) + p.slip_velocity(c, u_free));
+    return p.h * ft.dot(slip);
+  }
+};
+
+// The pair's relative rolling (t_1, t_2 of the relative spin): a force m_r whose torque R m_r
+// (R = rolling_radius) opposes it, |m_r| <= mur m_n (laws/rolling.h).
+struct RollingDisc {
+  static constexpr int size = 2;
+  static constexpr bool own_torque = true;
+  static double coefficient(const Coefficients &k) { return k.rolling; }
+  static double &coefficient(Coefficients &k) { return k.rolling; }
+  static double row_coefficient(const ContactProblem &p, int c) { return p.rolling[c]; }
+  // h R t_k . (w_j - w_i)
+  static void gap(const ContactProblem &p, int c, const std::vector<Vec3> &u, const Vec3 &,
+                  double *g)
+  {
+    const Vec3 roll = (p.h * p.rolling_radius(c)) * p.relative_spin(c, u);
+    g[0] = p.tangent1[c].dot(roll);
+    g[1] = p.tangent2[c].dot(roll);
+  }
+  static void add_linear(const ContactProblem &, int, const double *, Vec3 &) {}
+  // the angular impulse h R (m_r1 t_1 + m_r2 t_2) on j, its opposite on i
+  static void push_spins(const ContactProblem &p, int c, const double *m, double h, int i, int j,
+                         Vec3 *spin_i, Vec3 *spin_j)
+  {
+    const Vec3 twist = (h * p.rolling_radius(c)) * (m[0] * p.tangent1[c] + m[1] * p.tangent2[c]);
+    if (spin_i) *spin_i -= p.inv_inertia[i] * twist;
+    if (spin_j) *spin_j += p.inv_inertia[j] * twist;
+  }
+  static void add_torque(const ContactProblem &p, int c, const double *m, Vec3 &ti, Vec3 &tj)
+  {
+    const Vec3 twist = p.rolling_radius(c) * (m[0] * p.tangent1[c] + m[1] * p.tangent2[c]);
+    ti -= twist;
+    tj += twist;
+  }
+  // h^2 R^2 (1/I_i + 1/I_j)
+  static void diagonals(const ContactProblem &p, int c, const RowBodies &b, double *d)
+  {
+    const double r = b.wall ? p.arm_i[c] : p.arm_i[c] * p.arm_j[c] / (p.arm_i[c] + p.arm_j[c]);
+    d[0] = d[1] = b.h2 * r * r * (p.inv_inertia[b.i] + (b.wall ? 0.0 : p.inv_inertia[b.j]));
+  }
+  static double angular_trace(const ContactProblem &p, int c, double)
+  {
+    const double r = p.rolling_radius(c);
+    return 2.0 * (r * r);
+  }
+  // the spins couple each rolling row with the tangential row across it: h^2 R sum a / I
+  static constexpr bool coupled = true;
+  static double coupling(const ContactProblem &p, int c)
+  {
+    const int i = p.body_i[c], j = p.body_j[c];
+    double couple = p.inv_inertia[i] * p.arm_i[c];
+    if (!is_wall(j)) couple += p.inv_inertia[j] * p.arm_j[c];
+    return couple * (p.h * p.h * p.rolling_radius(c));
+  }
+  // h m_r . R (w_j - w_i), mean spin of the step
+  static double work(const ContactProblem &p, int c, const double *m, const std::vector<Vec3> &u,
+                     const std::vector<Vec3> &u_free)
+  {
+    const Vec3 fr = m[0] * p.tangent1[c] + m[1] * p.tangent2[c];
+    const Vec3 roll = 0.5 * (p.relative_spin(c, u) + p.relative_spin(c, u_free));
+    return p.h * p.rolling_radius(c) * fr.dot(roll);
+  }
+};
+
+}    // namespace hardcontact
