@@ -9,6 +9,7 @@ friction_front.csv into --results (bench/run.sh friction: bench/results/friction
 report.py its .md and a plot of the mean height against the loop time.
 
   python3 bench/friction/front.py [--results DIR] [--quick] [--jobs 2] [--reuse] [--scene settle20]
+                                  [--seed N] [--only ID,..]
 """
 
 import argparse
@@ -113,14 +114,18 @@ def main():
                     help="settle10: the 1210-sphere pile to t = 30 (default); settle20: issue "
                          "36's 8000-sphere, 20-layer settle (20 x 20 columns) to t = 12 (600 "
                          "steps of 0.02) at the default and at h 0.04, with its twins")
+    ap.add_argument("--seed", type=int, default=15,
+                    help="the pile's seed (diameters and offsets; 15: the recorded fronts); "
+                         "another seed writes its own work folder and CSV (..._seed<N>)")
     ap.add_argument("--reuse", action="store_true",
                     help="read the runs whose deck is unchanged and finished from their logs")
     a = ap.parse_args()
     side, layers, T = (11, 6, 10.0) if a.quick else (11, 10, 30.0)
     if a.scene == "settle20":
         side, layers, T = 20, 20, 12.0
-    scene = scenes.pile(side, side, layers)
-    tag = ("quick" if a.quick else "full") + ("" if a.scene == "settle10" else "_" + a.scene)
+    scene = scenes.pile(side, side, layers, seed=a.seed)
+    seed_tag = "" if a.seed == 15 else "_seed%d" % a.seed
+    tag = ("quick" if a.quick else "full") + ("" if a.scene == "settle10" else "_" + a.scene) + seed_tag
     work = Path(os.environ.get("BENCH_WORKDIR", ROOT / "bench" / "work")) / ("friction_front_" + tag)
     work.mkdir(parents=True, exist_ok=True)
     data = work / "pile.data"
@@ -190,8 +195,8 @@ def main():
             if row is not None:
                 rows.append(row)
     Path(a.results).mkdir(parents=True, exist_ok=True)
-    out = Path(a.results) / ("friction_front%s%s.csv" % (
-        "_quick" if a.quick else "", "" if a.scene == "settle10" else "_" + a.scene))
+    out = Path(a.results) / ("friction_front%s%s%s.csv" % (
+        "_quick" if a.quick else "", "" if a.scene == "settle10" else "_" + a.scene, seed_tag))
     if a.only and out.exists():    # rerun of some runs: the others' rows stay
         with open(out) as f:
             done = {r["run"]: r for r in csv.DictReader(f)}
