@@ -465,3 +465,61 @@ TEST(Friction, CoulombLocalSolveMeetsTheLaw)
   }
   for (int c : cases) EXPECT_GT(c, 100);    // every case met
 }
+
+// A disc of one component (what twisting resistance will be: a torque about the normal, |m|
+// <= coef m_n): DiscLaw<TangentialDisc, it> projects onto {|t| <= mu n, |s| <= c n} as the
+// search over the normal value finds, its local solve clamps the component to [-c n, c n],
+// and its violation is 0 at a solution of the law (sliding on both discs) and > 0 off it.
+namespace {
+struct OneComponentDisc {    // the coefficient in the rolling slot: a test disc only
+  static constexpr int size = 1;
+  static double coefficient(const hardcontact::Coefficients &k) { return k.rolling; }
+  static double &coefficient(hardcontact::Coefficients &k) { return k.rolling; }
+};
+using OneComponentLaw = hardcontact::DiscLaw<hardcontact::TangentialDisc, OneComponentDisc>;
+}    // namespace
+
+TEST(Friction, OneComponentDiscProjectsAndSolves)
+{
+  static_assert(OneComponentLaw::block == 4, "normal, two tangential, one more");
+  std::mt19937 gen(11);
+  std::uniform_real_distribution<double> U(-2.0, 2.0), C(0.0, 1.0);
+  for (int trial = 0; trial < 2000; ++trial) {
+    const hardcontact::Coefficients k{C(gen), trial % 7 == 0 ? 0.0 : C(gen)};
+    double m[4];
+    for (double &v : m) v = U(gen);
+    double p[4];
+    std::copy(m, m + 4, p);
+    OneComponentLaw::project(p, k);
+    auto dist2 = [&](double n) {
+      const double len = std::hypot(m[1], m[2]), cap = k.friction * n;
+      const double f = len > cap ? (len > 0.0 ? cap / len : 0.0) : 1.0;
+      const double s = std::max(-k.rolling * n, std::min(k.rolling * n, m[3]));
+      return (n - m[0]) * (n - m[0]) + (f * m[1] - m[1]) * (f * m[1] - m[1]) +
+             (f * m[2] - m[2]) * (f * m[2] - m[2]) + (s - m[3]) * (s - m[3]);
+    };
+    double lo = 0.0, hi = 8.0;
+    for (int it = 0; it < 200; ++it) {
+      const double a = lo + (hi - lo) / 3.0, b = hi - (hi - lo) / 3.0;
+      if (dist2(a) <= dist2(b)) hi = b;
+      else lo = a;
+    }
+    EXPECT_NEAR(p[0], 0.5 * (lo + hi), 1e-7) << trial;
+    EXPECT_LE(std::hypot(p[1], p[2]), k.friction * p[0] * (1 + 1e-12) + 1e-300) << trial;
+    EXPECT_LE(std::abs(p[3]), k.rolling * p[0] * (1 + 1e-12) + 1e-300) << trial;
+  }
+  // local solve: the normal closes its gap, the one-component disc slides at its bound
+  const hardcontact::Coefficients k{0.5, 0.2};
+  double mm[4] = {1.0, 0.0, 0.0, 0.0};
+  const double g[4] = {-1.0, 0.0, 0.0, -5.0}, d[4] = {1.0, 1.0, 1.0, 1.0};
+  OneComponentLaw::local_solve(mm, g, d, k);
+  EXPECT_DOUBLE_EQ(mm[0], 2.0);
+  EXPECT_DOUBLE_EQ(mm[3], 0.2 * 2.0);    // clamped to c n, against its motion
+  // violation: a contact sliding on both discs (force on each edge, against its motion, gap
+  // closed by the shift) meets the law; turning the one-component force around does not
+  const double m_ok[4] = {2.0, 1.0, 0.0, 0.4};
+  const double g_ok[4] = {0.5 * 0.3 + 0.2 * 0.7, -0.3, 0.0, -0.7};
+  EXPECT_NEAR(OneComponentLaw::violation(g_ok, m_ok, k, 1.0), 0.0, 1e-15);
+  const double m_bad[4] = {2.0, 1.0, 0.0, -0.4};
+  EXPECT_GT(OneComponentLaw::violation(g_ok, m_bad, k, 1.0), 0.1);
+}

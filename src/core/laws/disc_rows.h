@@ -6,7 +6,7 @@
 // members and a coefficient in Coefficients (law.h) and ContactProblem.
 //
 // Members (p the problem, c the row, m or g the disc's own components):
-//   size                         components (2: a tangential plane)
+//   size                         components (2: a plane such as the tangential one; 1: an axis)
 //   coefficient(k)               its bound coef in |m_q| <= coef m_n (a reference: apgd scales it)
 //   row_coefficient(p, c)        the row's coefficient from the problem
 //   gap(p, c, u, v, g)           its components of h G_c u, with v = h v_slip (contact_problem.h)
