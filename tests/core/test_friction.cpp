@@ -319,44 +319,55 @@ TEST(Friction, ConvexLocalSolveIsTheMetricProjection)
   convex_local_solve_is_the_projection<hardcontact::RollingLaw>(0.2);
 }
 
-// The projection onto {|t| <= mu n, |r| <= mur n} against a search over the normal value
-// (for each n' the two discs project independently, and the distance is convex in n':
-// ternary search): the same point, and the result inside the set.
-TEST(Friction, RollingProjectionIsTheNearestPoint)
+// For 2000 random points m and coefficients k: Law::project(m) has the normal value that
+// minimises dist2(m, k, n) (for each n the discs project independently, and the distance is
+// convex in n: ternary search); check(p, k, trial) then looks at the projected point.
+template <class Law, class Dist, class Check>
+void projection_matches_search(unsigned seed, Dist &&dist2, Check &&check)
 {
-  std::mt19937 gen(5);
+  constexpr int B = Law::block;
+  std::mt19937 gen(seed);
   std::uniform_real_distribution<double> U(-2.0, 2.0), C(0.0, 1.0);
   for (int trial = 0; trial < 2000; ++trial) {
     const hardcontact::Coefficients k{C(gen), trial % 7 == 0 ? 0.0 : C(gen)};
-    double m[5];
+    double m[B], p[B];
     for (double &v : m) v = U(gen);
-    double p[5];
-    std::copy(m, m + 5, p);
-    hardcontact::RollingLaw::project(p, k);
-    auto clip = [](const double *v, double cap, double *out) {
-      const double len = std::hypot(v[0], v[1]);
-      const double f = len > cap ? (len > 0.0 ? cap / len : 0.0) : 1.0;
-      out[0] = f * v[0];
-      out[1] = f * v[1];
-    };
-    auto dist2 = [&](double n) {
-      double q[5] = {n};
-      clip(m + 1, k.friction * n, q + 1);
-      clip(m + 3, k.rolling * n, q + 3);
-      double d = 0.0;
-      for (int a = 0; a < 5; ++a) d += (q[a] - m[a]) * (q[a] - m[a]);
-      return d;
-    };
+    std::copy(m, m + B, p);
+    Law::project(p, k);
     double lo = 0.0, hi = 8.0;
     for (int it = 0; it < 200; ++it) {
       const double a = lo + (hi - lo) / 3.0, b = hi - (hi - lo) / 3.0;
-      if (dist2(a) <= dist2(b)) hi = b;
+      if (dist2(m, k, a) <= dist2(m, k, b)) hi = b;
       else lo = a;
     }
     EXPECT_NEAR(p[0], 0.5 * (lo + hi), 1e-7) << trial;
-    EXPECT_LE(std::hypot(p[1], p[2]), k.friction * p[0] * (1 + 1e-12) + 1e-300) << trial;
-    EXPECT_LE(std::hypot(p[3], p[4]), k.rolling * p[0] * (1 + 1e-12) + 1e-300) << trial;
+    check(p, k, trial);
   }
+}
+
+// The projection onto {|t| <= mu n, |r| <= mur n}: the same point as the search, inside the set.
+TEST(Friction, RollingProjectionIsTheNearestPoint)
+{
+  auto clip = [](const double *v, double cap, double *out) {
+    const double len = std::hypot(v[0], v[1]);
+    const double f = len > cap ? (len > 0.0 ? cap / len : 0.0) : 1.0;
+    out[0] = f * v[0];
+    out[1] = f * v[1];
+  };
+  projection_matches_search<hardcontact::RollingLaw>(
+      5,
+      [&](const double *m, const hardcontact::Coefficients &k, double n) {
+        double q[5] = {n};
+        clip(m + 1, k.friction * n, q + 1);
+        clip(m + 3, k.rolling * n, q + 3);
+        double d = 0.0;
+        for (int a = 0; a < 5; ++a) d += (q[a] - m[a]) * (q[a] - m[a]);
+        return d;
+      },
+      [](const double *p, const hardcontact::Coefficients &k, int trial) {
+        EXPECT_LE(std::hypot(p[1], p[2]), k.friction * p[0] * (1 + 1e-12) + 1e-300) << trial;
+        EXPECT_LE(std::hypot(p[3], p[4]), k.rolling * p[0] * (1 + 1e-12) + 1e-300) << trial;
+      });
 }
 
 TEST(Friction, RollingSolversAgreeAndConserveMomentum)
@@ -482,32 +493,19 @@ using OneComponentLaw = hardcontact::DiscLaw<hardcontact::TangentialDisc, OneCom
 TEST(Friction, OneComponentDiscProjectsAndSolves)
 {
   static_assert(OneComponentLaw::block == 4, "normal, two tangential, one more");
-  std::mt19937 gen(11);
-  std::uniform_real_distribution<double> U(-2.0, 2.0), C(0.0, 1.0);
-  for (int trial = 0; trial < 2000; ++trial) {
-    const hardcontact::Coefficients k{C(gen), trial % 7 == 0 ? 0.0 : C(gen)};
-    double m[4];
-    for (double &v : m) v = U(gen);
-    double p[4];
-    std::copy(m, m + 4, p);
-    OneComponentLaw::project(p, k);
-    auto dist2 = [&](double n) {
-      const double len = std::hypot(m[1], m[2]), cap = k.friction * n;
-      const double f = len > cap ? (len > 0.0 ? cap / len : 0.0) : 1.0;
-      const double s = std::max(-k.rolling * n, std::min(k.rolling * n, m[3]));
-      return (n - m[0]) * (n - m[0]) + (f * m[1] - m[1]) * (f * m[1] - m[1]) +
-             (f * m[2] - m[2]) * (f * m[2] - m[2]) + (s - m[3]) * (s - m[3]);
-    };
-    double lo = 0.0, hi = 8.0;
-    for (int it = 0; it < 200; ++it) {
-      const double a = lo + (hi - lo) / 3.0, b = hi - (hi - lo) / 3.0;
-      if (dist2(a) <= dist2(b)) hi = b;
-      else lo = a;
-    }
-    EXPECT_NEAR(p[0], 0.5 * (lo + hi), 1e-7) << trial;
-    EXPECT_LE(std::hypot(p[1], p[2]), k.friction * p[0] * (1 + 1e-12) + 1e-300) << trial;
-    EXPECT_LE(std::abs(p[3]), k.rolling * p[0] * (1 + 1e-12) + 1e-300) << trial;
-  }
+  projection_matches_search<OneComponentLaw>(
+      11,
+      [](const double *m, const hardcontact::Coefficients &k, double n) {
+        const double len = std::hypot(m[1], m[2]), cap = k.friction * n;
+        const double f = len > cap ? (len > 0.0 ? cap / len : 0.0) : 1.0;
+        const double s = std::max(-k.rolling * n, std::min(k.rolling * n, m[3]));
+        return (n - m[0]) * (n - m[0]) + (f * m[1] - m[1]) * (f * m[1] - m[1]) +
+               (f * m[2] - m[2]) * (f * m[2] - m[2]) + (s - m[3]) * (s - m[3]);
+      },
+      [](const double *p, const hardcontact::Coefficients &k, int trial) {
+        EXPECT_LE(std::hypot(p[1], p[2]), k.friction * p[0] * (1 + 1e-12) + 1e-300) << trial;
+        EXPECT_LE(std::abs(p[3]), k.rolling * p[0] * (1 + 1e-12) + 1e-300) << trial;
+      });
   // local solve: the normal closes its gap, the one-component disc slides at its bound
   const hardcontact::Coefficients k{0.5, 0.2};
   double mm[4] = {1.0, 0.0, 0.0, 0.0};
