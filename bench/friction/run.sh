@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # The frictional suite (README.md here): the 10-layer settle at every (tol, h) with its twins,
-# the heap over three seeds, the cones on the drum, heap and hopper (cones.sh), then the table
-# and the plot, into bench/results/friction/<host>/;
+# the heap over three seeds, the cones on the drum, heap and hopper (cones.sh) and their twins
+# at 10 x kn (cones.sh --stiff), the column collapse (collapse.sh), then the table and the
+# plot, into bench/results/friction/<host>/;
 # --quick checks the scripts (a small settle, one heap seed, about 5 minutes).
 #   bench/run.sh friction [--quick]        (or bench/friction/run.sh [--quick])
 # The 8000-sphere settle is separate: python3 front.py --scene settle20 --results DIR (about 4
@@ -14,5 +15,7 @@ HERE="$ROOT/bench/friction"
   --results "$RESULTS" "${QUICK[@]}"
 bash "$HERE/heap_front.sh" "${QUICK[@]}"
 bash "$HERE/cones.sh" "${QUICK[@]}"
+bash "$HERE/cones.sh" "${QUICK[@]}" --stiff
+bash "$HERE/collapse.sh" "${QUICK[@]}"
 "$PY" "$HERE/report.py" "$RESULTS/friction_front${QUICK:+_quick}.csv"
 echo "friction suite ($MODE): $RESULTS"
