@@ -20,14 +20,6 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import collapse_runout  # noqa: E402
 
 
-def grains(path):
-    f = collapse_runout.frame(path)
-    if "type" in f:
-        f = {k: v[f["type"] == 1] for k, v in f.items()}
-    order = np.argsort(f["id"])
-    return {k: v[order] for k, v in f.items()}
-
-
 def main():
     if len(sys.argv) < 3:
         sys.exit(__doc__)
@@ -35,8 +27,8 @@ def main():
     fig, axes = plt.subplots(len(runs), 1, figsize=(9, 3.2 * len(runs)), squeeze=False,
                              layout="constrained")
     for ax, (label, d) in zip(axes[:, 0], runs):
-        c0 = grains(os.path.join(d, "collapse0.dump"))
-        c1 = grains(os.path.join(d, "collapse1.dump"))
+        c0 = collapse_runout.grains(os.path.join(d, "collapse0.dump"))
+        c1 = collapse_runout.grains(os.path.join(d, "collapse1.dump"))
         moved = np.hypot(c1["x"] - c0["x"], c1["z"] - c0["z"])
         ax.add_collection(PatchCollection([Circle((x, z), r) for x, z, r in
                                            zip(c0["x"], c0["z"], c0["radius"])],

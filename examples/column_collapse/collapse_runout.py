@@ -19,37 +19,31 @@ grains' friction and the channel."""
 
 import argparse
 import json
+import os
 import sys
 
 import numpy as np
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "python"))
+import hctools as hc  # noqa: E402
+
 
 def frame(path):
-    """The last frame of a dump as {column: array}."""
-    with open(path) as f:
-        lines = f.readlines()
-    cols, rows = None, None
-    k = 0
-    while k < len(lines):
-        if lines[k].startswith("ITEM: NUMBER OF ATOMS"):
-            n = int(lines[k + 1])
-        if lines[k].startswith("ITEM: ATOMS"):
-            cols = lines[k].split()[2:]
-            rows = lines[k + 1:k + 1 + n]
-            k += n
-        k += 1
-    if cols is None:
+    """The last frame of a dump as {column: array}, rows in id order (hctools.read_dump)."""
+    frames = hc.read_dump(path)
+    if not frames:
         sys.exit("collapse_runout: no frame in %s" % path)
-    data = np.array([r.split() for r in rows], dtype=float)
-    return {c: data[:, i] for i, c in enumerate(cols)}
+    return frames[-1].columns
+
+
+def grains(path):
+    """The grains (type 1: not the floor's spheres) of a dump's last frame, in id order."""
+    f = frame(path)
+    return {k: v[f["type"] == 1] for k, v in f.items()} if "type" in f else f
 
 
 def runout(column_dump, deposit_dump, floor=1.05):
-    c0, c1 = frame(column_dump), frame(deposit_dump)
-    if "type" in c0:    # the grains (type 1), not the floor's spheres
-        c0 = {k: v[c0["type"] == 1] for k, v in c0.items()}
-    if "type" in c1:
-        c1 = {k: v[c1["type"] == 1] for k, v in c1.items()}
+    c0, c1 = grains(column_dump), grains(deposit_dump)
     dmax = 2.0 * float(np.max(c0["radius"]))
     L0 = float(np.max(c0["x"] + c0["radius"]))
     H0 = float(np.max(c0["z"] + c0["radius"])) - floor

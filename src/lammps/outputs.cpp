@@ -139,24 +139,23 @@ void Outputs::per_atom_and_local(const ContactProblem &p, const std::vector<doub
     std::copy(p.w_free.begin(), p.w_free.end(), u_free_.begin() + nb);
   }
   int nrows = 0;
-  for (int c = 0; c < nc; ++c) {
-    const int i = p.body_i[c], j = p.body_j[c];
-    const bool here = p.counted[c] != 0;
-    if (here) counts[0] += 1.0;
-    if (normal_force(c) == 0.0) continue;    // active: a force, pushing or (cohesion) pulling
-    if (i < nlocal) array_atom[i][0] += 1.0;
-    if (!is_wall(j) && j < nlocal) array_atom[j][0] += 1.0;
-    if (here) {
+  with_law(law, [&](auto rows_law) {    // the law's type once, not per row
+    using Law = decltype(rows_law);
+    for (int c = 0; c < nc; ++c) {
+      const int i = p.body_i[c], j = p.body_j[c];
+      const bool here = p.counted[c] != 0;
+      if (here) counts[0] += 1.0;
+      if (normal_force(c) == 0.0) continue;    // active: a force, pushing or (cohesion) pulling
+      if (i < nlocal) array_atom[i][0] += 1.0;
+      if (!is_wall(j) && j < nlocal) array_atom[j][0] += 1.0;
+      if (!here) continue;
       counts[1] += 1.0;
       if (listed(j)) ++nrows;
-      if (block > 1)    // each disc's work: -h m_q . (its mean rate), laws/disc_rows.h
-        with_law(law, [&](auto rows_law) {
-          using Law = decltype(rows_law);
-          if constexpr (Law::block > 1)
-            Law::subtract_work(p, c, &mu[static_cast<size_t>(block) * c], u, u_free_, counts[2]);
-        });
+      // each disc's work: -h m_q . (its mean rate), laws/disc_rows.h
+      if constexpr (Law::block > 1)
+        Law::subtract_work(p, c, &mu[static_cast<size_t>(block) * c], u, u_free_, counts[2]);
     }
-  }
+  });
   double all[3];
   MPI_Allreduce(counts, all, 3, MPI_DOUBLE, MPI_SUM, world);
   diag_[CANDIDATES] = all[0];

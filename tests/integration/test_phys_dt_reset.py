@@ -27,7 +27,6 @@ one step to the next; its multipliers are forces, so the warm start carries over
   every rank, so every rank count gives a pile at rest within the same bounds."""
 
 import math
-import sys
 
 import numpy as np
 

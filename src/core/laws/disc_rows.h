@@ -129,7 +129,7 @@ struct RollingDisc {
   // h^2 R^2 (1/I_i + 1/I_j)
   static void diagonals(const ContactProblem &p, int c, const RowBodies &b, double *d)
   {
-    const double r = b.wall ? p.arm_i[c] : p.arm_i[c] * p.arm_j[c] / (p.arm_i[c] + p.arm_j[c]);
+    const double r = p.rolling_radius(c);
     d[0] = d[1] = b.h2 * r * r * (p.inv_inertia[b.i] + (b.wall ? 0.0 : p.inv_inertia[b.j]));
   }
   static double angular_trace(const ContactProblem &p, int c, double)
