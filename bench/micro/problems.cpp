@@ -53,7 +53,7 @@ LawProblem make(ContactLaw law)
     std::vector<Vec3> w(c.p.n_bodies());
     for (Vec3 &s : w) s = Vec3(U(gen), U(gen), U(gen));
     hctest::add_friction(c.p, c.r, kFriction, w);
-    if (law == ContactLaw::Rolling) c.p.rolling.assign(c.p.n_contacts(), kRolling);
+    if (law == ContactLaw::Rolling) c.p.resistance[0].assign(c.p.n_contacts(), kRolling);
   }
   out.p = std::move(c.p);
   std::unique_ptr<hardcontact::Solver> solver = hardcontact::make_solver("apgd", law);

@@ -35,6 +35,10 @@ constexpr int wall_body(int w) { return -1 - w; }
 constexpr bool is_wall(int j) { return j < 0; }
 constexpr int wall_index(int j) { return -1 - j; }
 
+// Room for the resistances a frictional law composes beyond Coulomb's tangential disc (rolling,
+// twisting, ...: laws/law_list.h, HARDCONTACT_RESISTANCES); each takes its own index.
+constexpr int kResistances = 4;
+
 struct ContactProblem {
   double h = 0.0;    // time step
   int n_owned = 0;
@@ -68,7 +72,9 @@ struct ContactProblem {
   std::vector<double> radius;
   std::vector<Vec3> w_free;
   std::vector<double> friction;
-  std::vector<double> rolling;    // rolling resistance coefficient per row (laws/rolling.h)
+  // per resistance r (rolling, twisting, ...: laws/disc_rows.h) its coefficient per row, empty
+  // when no law of the scene reads it
+  std::vector<double> resistance[kResistances];
   std::vector<Vec3> tangent1, tangent2;
   std::vector<double> arm_i, arm_j;
 
@@ -93,7 +99,7 @@ struct ContactProblem {
     size.clear();
     counted.clear();
     friction.clear();
-    rolling.clear();
+    for (auto &r : resistance) r.clear();
     tangent1.clear();
     tangent2.clear();
     arm_i.clear();

@@ -28,22 +28,14 @@ void ContactHistory::load(const ContactProblem &p, const LAMMPS_NS::tagint *tag,
 {
   const int nc = p.n_contacts();
   mu.assign(static_cast<size_t>(block_) * nc, 0.0);
-  for (int c = 0; c < nc; ++c) {
-    const double *v = find(p.body_i[c], partner_key(p, tag, c));
-    if (!v) continue;
-    double *m = &mu[static_cast<size_t>(block_) * c];
-    if (block_ == 1) {
-      m[0] = v[0];
-      continue;
+  with_law(law_, [&](auto rows_law) {
+    using Law = decltype(rows_law);
+    for (int c = 0; c < nc; ++c) {
+      // body i kept the values on itself (laws: history_values)
+      const double *v = find(p.body_i[c], partner_key(p, tag, c));
+      if (v) Law::from_history(p, c, v, &mu[static_cast<size_t>(block_) * c]);
     }
-    // body i kept the force (and rolling force) on itself: the row's are on j
-    for (int vec = 0; 2 * vec + 1 < block_; ++vec) {
-      const Vec3 on_j = -Vec3(v[3 * vec], v[3 * vec + 1], v[3 * vec + 2]);
-      if (vec == 0) m[0] = on_j.dot(p.normal[c]);
-      m[2 * vec + 1] = on_j.dot(p.tangent1[c]);
-      m[2 * vec + 2] = on_j.dot(p.tangent2[c]);
-    }
-  }
+  });
 }
 
 void ContactHistory::store(const ContactProblem &p, const LAMMPS_NS::tagint *tag,
@@ -51,26 +43,18 @@ void ContactHistory::store(const ContactProblem &p, const LAMMPS_NS::tagint *tag
 {
   for (int i = 0; i < p.n_owned; ++i) clear(i);
   const int nc = p.n_contacts();
-  double on[2][6];    // the values kept by atom i (on i) and by atom j (on j)
-  for (int c = 0; c < nc; ++c) {
-    const double *v = &mu[static_cast<size_t>(block_) * c];
-    if (v[0] <= 0.0) continue;    // an open contact starts the next step from 0
-    const int i = p.body_i[c], j = p.body_j[c];
-    if (block_ == 1) {
-      on[0][0] = on[1][0] = v[0];
-    } else {
-      for (int vec = 0; 2 * vec + 1 < block_; ++vec) {
-        Vec3 f = v[2 * vec + 1] * p.tangent1[c] + v[2 * vec + 2] * p.tangent2[c];
-        if (vec == 0) f += v[0] * p.normal[c];
-        for (int d = 0; d < 3; ++d) {
-          on[0][3 * vec + d] = -f[d];
-          on[1][3 * vec + d] = f[d];
-        }
-      }
+  with_law(law_, [&](auto rows_law) {
+    using Law = decltype(rows_law);
+    double on_i[Law::history], on_j[Law::history];    // the values atom i and atom j keep
+    for (int c = 0; c < nc; ++c) {
+      const double *m = &mu[static_cast<size_t>(block_) * c];
+      if (m[0] <= 0.0) continue;    // an open contact starts the next step from 0
+      const int i = p.body_i[c], j = p.body_j[c];
+      Law::history_values(p, c, m, on_i, on_j);
+      if (i < p.n_owned) add(i, partner_key(p, tag, c), on_i);
+      if (!is_wall(j) && j < p.n_owned) add(j, static_cast<double>(tag[i]), on_j);
     }
-    if (i < p.n_owned) add(i, partner_key(p, tag, c), on[0]);
-    if (!is_wall(j) && j < p.n_owned) add(j, static_cast<double>(tag[i]), on[1]);
-  }
+  });
 }
 
 void ContactHistory::grow(int nmax)

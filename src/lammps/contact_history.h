@@ -4,10 +4,10 @@
 // partner = atom ID of the other sphere, or the row's wall code j < 0 (contact_source.h).
 // Both atoms of a pair keep the entry, so each of the two processes that hold a pair across
 // processors finds the same values. Per contact the law's block (1: the normal force) is kept
-// as k values; with friction (block 3) as the force on the storing atom in the box frame (the
-// partner keeps its negation), with rolling (block 5) also the rolling force as a box-frame
-// vector (k = 6), so that the values survive a new tangent frame or a row seen from the other
-// atom (i and j swapped) and are read back as components in the row's frame.
+// as k = law_history values, written and read by the law (history_values, from_history): with
+// friction the force on the storing atom in the box frame (the partner keeps its negation) and
+// each further disc's as a box-frame vector, so that the values survive a new tangent frame or
+// a row seen from the other atom (i and j swapped) and are read back in the row's frame.
 #pragma once
 
 #include "../core/contact_problem.h"
@@ -28,7 +28,7 @@ class ContactHistory {
   // law: the contact law of the rows, whose multipliers per contact (law_block) are kept as
   // law_history values (laws/law_list.h)
   ContactHistory(LAMMPS_NS::Memory *memory, ContactLaw law) :
-      memory_(memory), block_(law_block(law)), k_(law_history(law))
+      memory_(memory), law_(law), block_(law_block(law)), k_(law_history(law))
   {
   }
   ~ContactHistory();
@@ -70,6 +70,7 @@ class ContactHistory {
   const double *find(int i, double partner) const;
 
   LAMMPS_NS::Memory *memory_;
+  ContactLaw law_;
   int block_;
   int k_;
   double **data_ = nullptr;    // nmax rows of 1 + stride() capacity_

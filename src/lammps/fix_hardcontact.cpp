@@ -34,9 +34,16 @@ hardcontact::FixOptions checked_options(LAMMPS *lmp, int narg, char **arg)
   if (!lmp->atom->tag_enable)
     lmp->error->all(FLERR, "Fix hardcontact requires atom IDs: remove 'atom_modify id no'");
   hardcontact::FixOptions o = hardcontact::parse_keywords(lmp, narg, arg, 3);
-  if (o.has_rolling() && !hardcontact::FixOptions::any_positive(o.friction))
-    lmp->error->all(FLERR, "Fix hardcontact rolling needs friction: add 'friction mu' (a "
-                           "sphere that can slide does not roll)");
+  for (int r = 0; r < hardcontact::kResistancesListed; ++r)
+    if (o.has_resistance(r) && !hardcontact::FixOptions::any_positive(o.friction))
+      hardcontact::compat::error_all(lmp->error, FLERR,
+                                     "Fix hardcontact {} needs friction: add 'friction mu' (a "
+                                     "contact that can slide resists no rolling or twisting)",
+                                     hardcontact::kResistanceKeywords[r]);
+  hardcontact::ContactLaw law;
+  if (!hardcontact::law_composing(o.has_friction(), o.resistances(), law))
+    lmp->error->all(FLERR, "Fix hardcontact: no contact law composes these resistances "
+                           "(core/laws/law_list.h): drop one of them");
   // The default solver: projected CG where the law is a bound (frictionless: doc/performance.md,
   // cg takes 0.5-0.7 x apgd's time on 3D piles); with friction nsgs sweeps and apgd where they
   // stall (solvers/hybrid.h: a packing at rest with mobilised friction takes a handful of
@@ -248,10 +255,12 @@ void FixHardContact::initial_integrate(int vflag)
   effects.moving_obstacles =
       regions_.moving() || meshes_.moving() || effects.wall_velocity != nullptr;
   effects.cohesion = &options_.cohesion;
+  effects.law = options_.contact_law();
   if (options_.has_friction()) {
     effects.friction = &options_.friction;
     if (!wall_friction_.empty()) effects.wall_friction = &wall_friction_;
-    if (options_.has_rolling()) effects.rolling = &options_.rolling;
+    for (int r = 0; r < hardcontact::kResistances; ++r)
+      if (options_.has_resistance(r)) effects.resistance[r] = &options_.resistance[r];
     effects.inertia = options_.disc ? 0.5 : 0.4;
   }
   const hardcontact::StepResult result =

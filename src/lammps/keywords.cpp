@@ -350,13 +350,15 @@ void parse_friction(LAMMPS *lmp, char **values, int n, FixOptions &o)
                          kUnbounded, values, n, o.friction);
 }
 
-void parse_rolling(LAMMPS *lmp, char **values, int n, FixOptions &o)
+// A resistance's keyword (core/laws/law_list.h, HARDCONTACT_RESISTANCES): its coefficient per
+// type pair.
+template <class Disc>
+void parse_resistance(LAMMPS *lmp, char **values, int n, FixOptions &o)
 {
-  parse_pair_coefficient(lmp, "rolling",
-                         "a coefficient >= 0 (the rolling torque is at most rolling x R x the "
-                         "normal force)",
-                         0.0, kUnbounded, values, n, o.rolling);
+  parse_pair_coefficient(lmp, Disc::keyword, Disc::bound, 0.0, kUnbounded, values, n,
+                         o.resistance[Disc::index]);
 }
+#define HARDCONTACT_RESISTANCE_ROW(Disc) {Disc::keyword, 1, 2, parse_resistance<Disc>, Disc::usage},
 
 void parse_disc(LAMMPS *lmp, char **, int, FixOptions &o)
 {
@@ -406,9 +408,8 @@ const Keyword keywords[] = {
      "within 3 tol of Coulomb's (lagged, the default), brought to its fixed point in every solve "
      "(exact), or none (convex: Anitescu and Tasora's relaxation, sliding contacts lift off at "
      "mu |slip|)"},
-    {"rolling", 1, 2, parse_rolling,
-     "rolling mur [I J]: rolling resistance >= 0 (torque at most mur R F_n) for type pairs I J "
-     "(all: default)"},
+    // rolling, twisting, ...: a row per resistance
+    HARDCONTACT_RESISTANCES(HARDCONTACT_RESISTANCE_ROW)
     {"disc", 0, 0, parse_disc, "disc: 2d discs, moment of inertia 1/2 m r^2"},
 };
 

@@ -62,13 +62,14 @@ struct FixOptions {
   // (the normal law alone, as if the keyword were absent)
   std::vector<double> friction;
   bool disc = false;    // 2d discs: I = 1/2 m r^2 (as fix nve/sphere disc), else 2/5 m r^2
-  // rolling resistance coefficient per type pair, (ntypes + 1)^2 row-major; needs friction
-  std::vector<double> rolling;
+  // each resistance's coefficient per type pair (rolling, twisting, ...: by its index,
+  // core/laws/law_list.h), (ntypes + 1)^2 row-major; empty: none. Needs friction.
+  std::vector<double> resistance[kResistances];
 
   bool has_friction() const
   {
     return any_positive(friction) || any_positive(plane_friction) ||
-           any_positive(region_friction) || any_positive(mesh_friction) || has_rolling();
+           any_positive(region_friction) || any_positive(mesh_friction) || resistances() != 0;
   }
   // whether a wall's friction value is its own (not kByType)
   static bool own_friction(double v) { return v != kByType; }
@@ -82,11 +83,22 @@ struct FixOptions {
       if (own_friction(v)) return true;
     return false;
   }
-  bool has_rolling() const { return any_positive(rolling); }
+  bool has_resistance(int r) const { return any_positive(resistance[r]); }
+  // bit r: resistance r has a positive coefficient
+  unsigned resistances() const
+  {
+    unsigned mask = 0;
+    for (int r = 0; r < kResistances; ++r)
+      if (has_resistance(r)) mask |= 1u << r;
+    return mask;
+  }
+  // The law the coefficients ask for (core/laws/law_list.h: law_composing; the fix checks
+  // that one exists)
   ContactLaw contact_law() const
   {
-    return has_rolling() ? ContactLaw::Rolling
-                         : has_friction() ? ContactLaw::Coulomb : ContactLaw::Normal;
+    ContactLaw law = ContactLaw::Normal;
+    law_composing(has_friction(), resistances(), law);
+    return law;
   }
   static bool any_positive(const std::vector<double> &table)
   {

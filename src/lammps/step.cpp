@@ -40,7 +40,7 @@ StepResult ContactStep::solve(Solver &solver, const SolverSettings &settings,
                               ContactHistory *history, const StepEffects &effects)
 {
   const bool restitution = effects.restitution && !effects.restitution->empty();
-  block_ = effects.rolling ? 5 : effects.friction ? 3 : 1;
+  block_ = law_block(effects.law);
   const Bodies bodies = build_bodies(solver.traits().needs_owner_map, effects);
   RowSink sink(problem_, atom->tag, atom->nlocal, free_speed_);
   sink.set_wall_velocities(effects.wall_velocity, effects.moving_obstacles);
@@ -82,7 +82,9 @@ StepResult ContactStep::solve(Solver &solver, const SolverSettings &settings,
       pair_values_of_rows(*effects.friction, targeted, problem_.friction);
       if (effects.wall_friction)
         wall_values_of_rows(*effects.wall_friction, targeted, problem_.friction);
-      if (effects.rolling) pair_values_of_rows(*effects.rolling, targeted, problem_.rolling);
+      for (int r = 0; r < kResistances; ++r)
+        if (effects.resistance[r])
+          pair_values_of_rows(*effects.resistance[r], targeted, problem_.resistance[r]);
       problem_.complete_frames(targeted);
     }
     // Warm start: each row starts from the multiplier its pair had at the last step, if any

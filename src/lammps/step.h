@@ -48,8 +48,11 @@ struct StepEffects {
   // wall has one
   const std::vector<double> *wall_friction = nullptr;
   double inertia = 0.4;
-  // rolling resistance per type pair, null for none (needs friction; core/laws/rolling.h)
-  const std::vector<double> *rolling = nullptr;
+  // each resistance's coefficient per type pair (rolling, twisting, ... by index:
+  // core/laws/law_list.h), null for none (needs friction)
+  const std::vector<double> *resistance[kResistances] = {};
+  // the law of the rows (FixOptions::contact_law)
+  ContactLaw law = ContactLaw::Normal;
 };
 
 class ContactStep : protected LAMMPS_NS::Pointers {
@@ -71,7 +74,8 @@ class ContactStep : protected LAMMPS_NS::Pointers {
 
   const ContactProblem &problem() const { return problem_; }
   // The contact forces of the last step (mu, or mu' - F with cohesion: core/cohesion.h),
-  // block() values per row (3 with friction: normal, tangent1, tangent2; 5 with rolling).
+  // block() values per row (the law's: 3 with friction, normal, tangent1, tangent2; then each
+  // resistance's components).
   const std::vector<double> &mu() const { return pull_any_ ? force_ : mu_; }
   int block() const { return block_; }
   const std::vector<Vec3> &u() const { return u_; }

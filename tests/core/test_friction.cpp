@@ -285,7 +285,7 @@ void convex_local_solve_is_the_projection(double rolling)
   std::uniform_real_distribution<double> uni(-1.0, 1.0);
   hardcontact::Coefficients k;
   k.friction = 0.4;
-  k.rolling = rolling;
+  k.resistance[0] = rolling;
   constexpr int B = Law::block;
   for (int trial = 0; trial < 500; ++trial) {
     double d[B], m[B], g[B], next[B];
@@ -359,14 +359,14 @@ TEST(Friction, RollingProjectionIsTheNearestPoint)
       [&](const double *m, const hardcontact::Coefficients &k, double n) {
         double q[5] = {n};
         clip(m + 1, k.friction * n, q + 1);
-        clip(m + 3, k.rolling * n, q + 3);
+        clip(m + 3, k.resistance[0] * n, q + 3);
         double d = 0.0;
         for (int a = 0; a < 5; ++a) d += (q[a] - m[a]) * (q[a] - m[a]);
         return d;
       },
       [](const double *p, const hardcontact::Coefficients &k, int trial) {
         EXPECT_LE(std::hypot(p[1], p[2]), k.friction * p[0] * (1 + 1e-12) + 1e-300) << trial;
-        EXPECT_LE(std::hypot(p[3], p[4]), k.rolling * p[0] * (1 + 1e-12) + 1e-300) << trial;
+        EXPECT_LE(std::hypot(p[3], p[4]), k.resistance[0] * p[0] * (1 + 1e-12) + 1e-300) << trial;
       });
 }
 
@@ -381,7 +381,7 @@ TEST(Friction, RollingSolversAgreeAndConserveMomentum)
   std::vector<Vec3> w(c.p.n_bodies());
   for (int b = 0; b < c.p.n_bodies(); ++b) w[b] = Vec3(std::sin(b), std::cos(3 * b), 0.5);
   add_friction(c.p, c.r, 0.5, w);
-  c.p.rolling.assign(c.p.n_contacts(), 0.2);
+  c.p.resistance[0].assign(c.p.n_contacts(), 0.2);
   std::vector<Vec3> u_free(c.p.u_free);
   u_free.insert(u_free.end(), w.begin(), w.end());
   const double e_free = kinetic2(c.p, u_free);
@@ -482,10 +482,8 @@ TEST(Friction, CoulombLocalSolveMeetsTheLaw)
 // search over the normal value finds, its local solve clamps the component to [-c n, c n],
 // and its violation is 0 at a solution of the law (sliding on both discs) and > 0 off it.
 namespace {
-struct OneComponentDisc {    // the coefficient in the rolling slot: a test disc only
+struct OneComponentDisc : hardcontact::ResistanceDisc<0> {    // a test disc, at index 0
   static constexpr int size = 1;
-  static double coefficient(const hardcontact::Coefficients &k) { return k.rolling; }
-  static double &coefficient(hardcontact::Coefficients &k) { return k.rolling; }
 };
 using OneComponentLaw = hardcontact::DiscLaw<hardcontact::TangentialDisc, OneComponentDisc>;
 }    // namespace
@@ -498,13 +496,13 @@ TEST(Friction, OneComponentDiscProjectsAndSolves)
       [](const double *m, const hardcontact::Coefficients &k, double n) {
         const double len = std::hypot(m[1], m[2]), cap = k.friction * n;
         const double f = len > cap ? (len > 0.0 ? cap / len : 0.0) : 1.0;
-        const double s = std::max(-k.rolling * n, std::min(k.rolling * n, m[3]));
+        const double s = std::max(-k.resistance[0] * n, std::min(k.resistance[0] * n, m[3]));
         return (n - m[0]) * (n - m[0]) + (f * m[1] - m[1]) * (f * m[1] - m[1]) +
                (f * m[2] - m[2]) * (f * m[2] - m[2]) + (s - m[3]) * (s - m[3]);
       },
       [](const double *p, const hardcontact::Coefficients &k, int trial) {
         EXPECT_LE(std::hypot(p[1], p[2]), k.friction * p[0] * (1 + 1e-12) + 1e-300) << trial;
-        EXPECT_LE(std::abs(p[3]), k.rolling * p[0] * (1 + 1e-12) + 1e-300) << trial;
+        EXPECT_LE(std::abs(p[3]), k.resistance[0] * p[0] * (1 + 1e-12) + 1e-300) << trial;
       });
   // local solve: the normal closes its gap, the one-component disc slides at its bound
   const hardcontact::Coefficients k{0.5, 0.2};

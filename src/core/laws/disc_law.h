@@ -1,13 +1,14 @@
 // A frictional law as one normal force and a list of discs that compose: per contact
 // m = (m_n, m_1, ..., m_D), each m_q one or two components bounded by its disc,
 //   K = {m_n >= 0, |m_q| <= coef_q m_n for every q},
-// with coef_0 the friction coefficient (the tangential disc, coulomb.h) and coef_1 the rolling
-// one (rolling.h). The dual cone of K is {g_n >= sum_q coef_q |g_q|}: De Saxce's shift is
-// sum_q coef_q |g_q|, which makes a sliding or rolling contact keep g_n = 0 and dissipate
-// sum_q coef_q m_n |g_q| / h. CoulombLaw is DiscLaw<TangentialDisc>, RollingLaw
+// with coef_0 the friction coefficient (the tangential disc, coulomb.h) and the others a
+// resistance's (rolling.h, ...). The dual cone of K is {g_n >= sum_q coef_q |g_q|}: De
+// Saxce's shift is sum_q coef_q |g_q|, which makes a sliding or rolling contact keep g_n = 0
+// and dissipate sum_q coef_q m_n |g_q| / h. CoulombLaw is DiscLaw<TangentialDisc>, RollingLaw
 // DiscLaw<TangentialDisc, RollingDisc>. The law owns its rows of G through its discs
 // (disc_rows.h): DualOperator calls gap_block, apply_block, block_diagonals, block_diagonal
-// and add_forces below, whatever the discs.
+// and add_forces below, and the contact history history_values and from_history, whatever
+// the discs.
 #pragma once
 
 #include "disc_rows.h"
@@ -15,6 +16,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <tuple>
+#include <type_traits>
 #include <utility>
 
 namespace hardcontact {
@@ -24,6 +27,12 @@ struct DiscLaw {
   static constexpr int discs = sizeof...(Discs);
   static_assert(discs >= 1, "a frictional law has its tangential disc");
   static_assert(((Discs::size == 1 || Discs::size == 2) && ...), "discs of 1 or 2 components");
+  // the tangential disc first: the outputs and the virial read the force from m[0..3)
+  static_assert(std::is_same<std::tuple_element_t<0, std::tuple<Discs...>>, TangentialDisc>::value,
+                "a frictional law's first disc is the tangential one");
+  static constexpr bool frictional = true;
+  // the resistances it composes (bit r: ResistanceDisc<r>), for the adapter's choice of law
+  static constexpr unsigned resistances = (Discs::resistance_bit | ...);
   static constexpr int block = 1 + (Discs::size + ...);
   // each disc's components and where they start in the block
   static constexpr int size_of[discs] = {Discs::size...};
@@ -39,9 +48,44 @@ struct DiscLaw {
     return size == 2 ? norm2(x[0], x[1]) : std::abs(x[0]);
   }
   // values a contact keeps between steps (the contact history): the force (normal and
-  // tangential) and each further disc's force as box-frame vectors, which survive a new
-  // tangent frame
+  // tangential) and each further disc's as box-frame vectors, which survive a new tangent
+  // frame and a row seen from the other body (i and j swapped)
   static constexpr int history = 3 * discs;
+  // Row c's history values as pushed on j (its opposite on i): per disc sum_k m_k axis_k, the
+  // first with m_n n.
+  static void history_values(const ContactProblem &p, int c, const double *m, double *on_i,
+                             double *on_j)
+  {
+    int vec = 0;
+    each_disc([&](auto disc, int at) {
+      using Disc = decltype(disc);
+      Vec3 f;
+      if constexpr (Disc::size == 2)
+        f = m[at] * Disc::axis(p, c, 0) + m[at + 1] * Disc::axis(p, c, 1);
+      else
+        f = m[at] * Disc::axis(p, c, 0);
+      if (vec == 0) f += m[0] * p.normal[c];
+      for (int d = 0; d < 3; ++d) {
+        on_i[3 * vec + d] = -f[d];
+        on_j[3 * vec + d] = f[d];
+      }
+      ++vec;
+    });
+  }
+  // The multipliers of row c from body i's history values (history_values' on_i), in the
+  // row's frame.
+  static void from_history(const ContactProblem &p, int c, const double *on_i, double *m)
+  {
+    int vec = 0;
+    each_disc([&](auto disc, int at) {
+      using Disc = decltype(disc);
+      const double *v = on_i + 3 * vec;
+      const Vec3 on_j = -Vec3(v[0], v[1], v[2]);
+      if (vec == 0) m[0] = on_j.dot(p.normal[c]);
+      for (int k = 0; k < Disc::size; ++k) m[at + k] = on_j.dot(Disc::axis(p, c, k));
+      ++vec;
+    });
+  }
 
   // disc q's coefficient: friction for the tangential disc, rolling for the rolling one
   static double coefficient(const Coefficients &k, int q)

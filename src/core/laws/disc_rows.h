@@ -2,13 +2,18 @@
 // components read from the bodies' velocities (eq. 15 extended by the contact point's motion)
 // and what its multipliers push (eq. 16), its entries of the block A_cc = h^2 G_c M^-1 G_c^T,
 // the coefficient bounding it and the work it dissipates. DualOperator applies any law through
-// these, without knowing which discs it holds. A new disc is a struct here with the same
-// members and a coefficient in Coefficients (law.h) and ContactProblem.
+// these, without knowing which discs it holds. TangentialDisc (Coulomb) is here; a resistance
+// (rolling.h, twisting.h) is a struct deriving from ResistanceDisc<index>, in its law's file,
+// with a line in law_list.h (HARDCONTACT_RESISTANCES): its coefficient, its keyword and its
+// per-row values then come from that index.
 //
 // Members (p the problem, c the row, m or g the disc's own components):
 //   size                         components (2: a plane such as the tangential one; 1: an axis)
+//   resistance_bit               1 << index for a resistance, 0 for the tangential disc
 //   coefficient(k)               its bound coef in |m_q| <= coef m_n (a reference: apgd scales it)
 //   row_coefficient(p, c)        the row's coefficient from the problem
+//   axis(p, c, k)                component k's direction in the box frame (the contact history
+//                                keeps a disc as the vector sum_k m_k axis_k)
 //   gap(p, c, u, v, g)           its components of h G_c u, with v = h v_slip (contact_problem.h)
 //   add_linear(p, c, m, f)       adds the force of its multipliers at the contact point (on j)
 //   own_torque                   true if its multipliers are a torque of their own (else only
@@ -40,10 +45,15 @@ struct RowBodies {
 // The contact point's slip (t_1, t_2): Coulomb friction, |m_t| <= mu m_n.
 struct TangentialDisc {
   static constexpr int size = 2;
+  static constexpr unsigned resistance_bit = 0;
   static constexpr bool own_torque = false;
   static double coefficient(const Coefficients &k) { return k.friction; }
   static double &coefficient(Coefficients &k) { return k.friction; }
   static double row_coefficient(const ContactProblem &p, int c) { return p.friction[c]; }
+  static const Vec3 &axis(const ContactProblem &p, int c, int k)
+  {
+    return k == 0 ? p.tangent1[c] : p.tangent2[c];
+  }
   static void gap(const ContactProblem &p, int c, const std::vector<Vec3> &, const Vec3 &v,
                   double *g)
   {
@@ -95,65 +105,17 @@ struct TangentialDisc {
   }
 };
 
-// The pair's relative rolling (t_1, t_2 of the relative spin): a force m_r whose torque R m_r
-// (R = rolling_radius) opposes it, |m_r| <= mur m_n (laws/rolling.h).
-struct RollingDisc {
-  static constexpr int size = 2;
-  static constexpr bool own_torque = true;
-  static double coefficient(const Coefficients &k) { return k.rolling; }
-  static double &coefficient(Coefficients &k) { return k.rolling; }
-  static double row_coefficient(const ContactProblem &p, int c) { return p.rolling[c]; }
-  // h R t_k . (w_j - w_i)
-  static void gap(const ContactProblem &p, int c, const std::vector<Vec3> &u, const Vec3 &,
-                  double *g)
-  {
-    const Vec3 roll = (p.h * p.rolling_radius(c)) * p.relative_spin(c, u);
-    g[0] = p.tangent1[c].dot(roll);
-    g[1] = p.tangent2[c].dot(roll);
-  }
-  static void add_linear(const ContactProblem &, int, const double *, Vec3 &) {}
-  // the angular impulse h R (m_r1 t_1 + m_r2 t_2) on j, its opposite on i
-  static void push_spins(const ContactProblem &p, int c, const double *m, double h, int i, int j,
-                         Vec3 *spin_i, Vec3 *spin_j)
-  {
-    const Vec3 twist = (h * p.rolling_radius(c)) * (m[0] * p.tangent1[c] + m[1] * p.tangent2[c]);
-    if (spin_i) *spin_i -= p.inv_inertia[i] * twist;
-    if (spin_j) *spin_j += p.inv_inertia[j] * twist;
-  }
-  static void add_torque(const ContactProblem &p, int c, const double *m, Vec3 &ti, Vec3 &tj)
-  {
-    const Vec3 twist = p.rolling_radius(c) * (m[0] * p.tangent1[c] + m[1] * p.tangent2[c]);
-    ti -= twist;
-    tj += twist;
-  }
-  // h^2 R^2 (1/I_i + 1/I_j)
-  static void diagonals(const ContactProblem &p, int c, const RowBodies &b, double *d)
-  {
-    const double r = p.rolling_radius(c);
-    d[0] = d[1] = b.h2 * r * r * (p.inv_inertia[b.i] + (b.wall ? 0.0 : p.inv_inertia[b.j]));
-  }
-  static double angular_trace(const ContactProblem &p, int c, double)
-  {
-    const double r = p.rolling_radius(c);
-    return 2.0 * (r * r);
-  }
-  // the spins couple each rolling row with the tangential row across it: h^2 R sum a / I
-  static constexpr bool coupled = true;
-  static double coupling(const ContactProblem &p, int c)
-  {
-    const int i = p.body_i[c], j = p.body_j[c];
-    double couple = p.inv_inertia[i] * p.arm_i[c];
-    if (!is_wall(j)) couple += p.inv_inertia[j] * p.arm_j[c];
-    return couple * (p.h * p.h * p.rolling_radius(c));
-  }
-  // h m_r . R (w_j - w_i), mean spin of the step
-  static double work(const ContactProblem &p, int c, const double *m, const std::vector<Vec3> &u,
-                     const std::vector<Vec3> &u_free)
-  {
-    const Vec3 fr = m[0] * p.tangent1[c] + m[1] * p.tangent2[c];
-    const Vec3 roll = 0.5 * (p.relative_spin(c, u) + p.relative_spin(c, u_free));
-    return p.h * p.rolling_radius(c) * fr.dot(roll);
-  }
+// A resistance beyond Coulomb's: its coefficient is resistance[Index] of the row's
+// Coefficients and of ContactProblem (per type pair in the adapter: its keyword, `keyword mu
+// [I J]`, from the derived disc's keyword, usage and bound).
+template <int Index>
+struct ResistanceDisc {
+  static_assert(Index >= 0 && Index < kResistances, "a resistance index below kResistances");
+  static constexpr int index = Index;
+  static constexpr unsigned resistance_bit = 1u << Index;
+  static double coefficient(const Coefficients &k) { return k.resistance[Index]; }
+  static double &coefficient(Coefficients &k) { return k.resistance[Index]; }
+  static double row_coefficient(const ContactProblem &p, int c) { return p.resistance[Index][c]; }
 };
 
 }    // namespace hardcontact

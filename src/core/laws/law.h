@@ -16,6 +16,8 @@
 //                           (nonsmooth Gauss-Seidel, solvers/nsgs.h)
 #pragma once
 
+#include "../contact_problem.h"
+
 #include <cmath>
 
 namespace hardcontact {
@@ -26,10 +28,12 @@ namespace hardcontact {
 // frictional pile's solve (968 spheres, apgd, perf) against a few % for the square root.
 inline double norm2(double a, double b) { return std::sqrt(a * a + b * b); }
 
-// The coefficients of one row (ContactProblem::friction, ::rolling): what a law reads.
+// The coefficients of one row (ContactProblem::friction, ::resistance): what a law reads.
+// friction bounds the tangential disc; resistance[r] the disc whose index is r (a
+// ResistanceDisc, disc_rows.h: rolling 0, twisting 1, ...).
 struct Coefficients {
   double friction = 0.0;
-  double rolling = 0.0;
+  double resistance[kResistances] = {};
 };
 
 }    // namespace hardcontact

@@ -11,6 +11,18 @@ struct NormalLaw {
   static constexpr int block = 1;
   // values a contact keeps between steps (the contact history): the normal force
   static constexpr int history = 1;
+  static constexpr bool frictional = false;
+  static constexpr unsigned resistances = 0;
+  // the normal force, kept alike by both bodies
+  static void history_values(const ContactProblem &, int, const double *m, double *on_i,
+                             double *on_j)
+  {
+    on_i[0] = on_j[0] = m[0];
+  }
+  static void from_history(const ContactProblem &, int, const double *on_i, double *m)
+  {
+    m[0] = on_i[0];
+  }
 
   static double project(double mu) { return mu > 0.0 ? mu : 0.0; }
 
