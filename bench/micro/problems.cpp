@@ -53,7 +53,12 @@ LawProblem make(ContactLaw law)
     std::vector<Vec3> w(c.p.n_bodies());
     for (Vec3 &s : w) s = Vec3(U(gen), U(gen), U(gen));
     hctest::add_friction(c.p, c.r, kFriction, w);
-    if (law == ContactLaw::Rolling) c.p.resistance[0].assign(c.p.n_contacts(), kRolling);
+    // each resistance the law holds, at kRolling (rolling 0, twisting 1)
+    hardcontact::with_law(law, [&](auto rows_law) {
+      for (int r = 0; r < hardcontact::kResistances; ++r)
+        if (decltype(rows_law)::resistances & (1u << r))
+          c.p.resistance[r].assign(c.p.n_contacts(), kRolling);
+    });
   }
   out.p = std::move(c.p);
   std::unique_ptr<hardcontact::Solver> solver = hardcontact::make_solver("apgd", law);
@@ -75,7 +80,7 @@ int spheres() { return n_spheres; }
 
 const LawProblem &problem(ContactLaw law)
 {
-  static std::unique_ptr<LawProblem> built[3];
+  static std::unique_ptr<LawProblem> built[hardcontact::kContactLaws];
   std::unique_ptr<LawProblem> &slot = built[static_cast<int>(law)];
   if (!slot) slot = std::make_unique<LawProblem>(make(law));
   return *slot;
@@ -87,6 +92,8 @@ const char *law_name(ContactLaw law)
     case ContactLaw::Normal: return "normal";
     case ContactLaw::Coulomb: return "coulomb";
     case ContactLaw::Rolling: return "rolling";
+    case ContactLaw::Twisting: return "twisting";
+    case ContactLaw::RollingTwisting: return "rolling_twisting";
   }
   return "?";
 }

@@ -19,12 +19,14 @@ def sphere_mass(diameter, density):
 
 
 def write_data(path, box, diameter, density, pos, vel=None, types=None, title="hardcontact scene",
-               host=None, dimension=3, velocities=True, number=repr):
+               host=None, dimension=3, velocities=True, number=repr, omega=None):
     """A LAMMPS data file for atom_style sphere, atoms numbered 1..N in the given order.
 
     box        ((xlo, xhi), (ylo, yhi), (zlo, zhi))
     diameter, density   per atom or one value
-    pos, vel   (N, 3); vel defaults to 0 (spins are always 0)
+    pos, vel   (N, 3); vel defaults to 0
+    omega      (N, 3) angular velocities, default 0 (the one way to start a spin on LIGGGHTS
+               3.8, whose set has no omega)
     types      per atom (default 1)
     host, dimension     the host that reads the file and the deck's dimension: in a 2d box
                LIGGGHTS gives a sphere the mass of a disc, pi r^2 rho, where LAMMPS gives
@@ -40,6 +42,7 @@ def write_data(path, box, diameter, density, pos, vel=None, types=None, title="h
     if dimension == 2 and getattr(host, "name", None) == "liggghts":
         density = density * (2.0 / 3.0) * diameter
     vel = np.zeros((n, 3)) if vel is None else np.asarray(vel, dtype=float).reshape(n, 3)
+    omega = np.zeros((n, 3)) if omega is None else np.asarray(omega, dtype=float).reshape(n, 3)
     types = np.ones(n, dtype=int) if types is None else np.broadcast_to(np.asarray(types, dtype=int), (n,))
     f = lambda x: number(float(x))    # noqa: E731 - one spelling for every float below
     lines = [title, "", "%d atoms" % n, "%d atom types" % (int(types.max()) if n else 1), ""]
@@ -52,7 +55,8 @@ def write_data(path, box, diameter, density, pos, vel=None, types=None, title="h
     if velocities:
         lines += ["", "Velocities", ""]
         for i in range(n):
-            lines.append("%d %s %s %s 0 0 0" % (i + 1, f(vel[i, 0]), f(vel[i, 1]), f(vel[i, 2])))
+            lines.append("%d %s %s %s %s %s %s" % (i + 1, f(vel[i, 0]), f(vel[i, 1]), f(vel[i, 2]),
+                                                   f(omega[i, 0]), f(omega[i, 1]), f(omega[i, 2])))
     with open(str(path), "w") as out:
         out.write("\n".join(lines) + "\n")
 

@@ -81,8 +81,8 @@ void DeckChecks::check(LAMMPS *lmp, Fix &fix, const std::vector<Region *> &regio
                     "of the hard contacts (the spheres would overlap and bounce as the soft "
                     "model says): replace the pair_style and pair_coeff lines by 'pair_style "
                     "none' and carry their parameters to the fix line: stiffness -> nothing, "
-                    "{}, friction -> 'friction mu', rolling -> 'rolling mur', cohesion -> "
-                    "'cohesion'",
+                    "{}, friction -> 'friction mu', rolling -> 'rolling mur', twisting -> "
+                    "'twisting mut', cohesion -> 'cohesion'",
                     fix.id, force->pair_style, damping_note(restitution_given));
 #if !HARDCONTACT_LIGGGHTS
   for (const Region *region : regions)

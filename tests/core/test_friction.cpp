@@ -279,19 +279,22 @@ TEST(Friction, ConesOnRandomPackings)
 // m - D^-1 g onto K in the metric of D: (m' - m + D^-1 g)^T D (z - m') >= 0 for every z in K,
 // with one disc and with two.
 template <class Law>
-void convex_local_solve_is_the_projection(double rolling)
+void convex_local_solve_is_the_projection(double rolling, double twisting = 0.0)
 {
   std::mt19937 rng(5);
   std::uniform_real_distribution<double> uni(-1.0, 1.0);
   hardcontact::Coefficients k;
   k.friction = 0.4;
   k.resistance[0] = rolling;
+  k.resistance[1] = twisting;
   constexpr int B = Law::block;
   for (int trial = 0; trial < 500; ++trial) {
     double d[B], m[B], g[B], next[B];
     for (int q = 0; q < B; ++q) {
       d[q] = q == 0 ? 0.5 + 0.4 * uni(rng) : 1.75 + uni(rng);
-      if (q >= 2 && q % 2 == 0) d[q] = d[q - 1];    // equal within a disc
+      // equal within a disc (the two-component ones come first; the last of an even block,
+      // twisting's, is a disc of its own)
+      if (q >= 2 && q % 2 == 0) d[q] = d[q - 1];
       m[q] = uni(rng);
       g[q] = uni(rng);
     }
@@ -317,6 +320,8 @@ TEST(Friction, ConvexLocalSolveIsTheMetricProjection)
 {
   convex_local_solve_is_the_projection<hardcontact::CoulombLaw>(0.0);
   convex_local_solve_is_the_projection<hardcontact::RollingLaw>(0.2);
+  convex_local_solve_is_the_projection<hardcontact::TwistingLaw>(0.0, 0.3);
+  convex_local_solve_is_the_projection<hardcontact::RollingTwistingLaw>(0.2, 0.3);
 }
 
 // For 2000 random points m and coefficients k: Law::project(m) has the normal value that
@@ -329,7 +334,9 @@ void projection_matches_search(unsigned seed, Dist &&dist2, Check &&check)
   std::mt19937 gen(seed);
   std::uniform_real_distribution<double> U(-2.0, 2.0), C(0.0, 1.0);
   for (int trial = 0; trial < 2000; ++trial) {
-    const hardcontact::Coefficients k{C(gen), trial % 7 == 0 ? 0.0 : C(gen)};
+    hardcontact::Coefficients k;    // rolling and twisting: 0 every 7th trial
+    k.friction = C(gen);
+    for (int r = 0; r < 2; ++r) k.resistance[r] = trial % 7 == 0 ? 0.0 : C(gen);
     double m[B], p[B];
     for (double &v : m) v = U(gen);
     std::copy(m, m + B, p);
@@ -370,7 +377,10 @@ TEST(Friction, RollingProjectionIsTheNearestPoint)
       });
 }
 
-TEST(Friction, RollingSolversAgreeAndConserveMomentum)
+// Every frictional solver on one random packing under a law with resistances (rolling and
+// twisting coefficients per row): the same velocities as apgd within 1e-4, kinetic energy not
+// above the free one, momentum and angular momentum exact, no gap below -2 tol.
+void resistance_solvers_agree(hardcontact::ContactLaw law, double rolling, double twisting)
 {
   hctest::RandomConfigOptions o;
   o.n = 50;
@@ -381,13 +391,14 @@ TEST(Friction, RollingSolversAgreeAndConserveMomentum)
   std::vector<Vec3> w(c.p.n_bodies());
   for (int b = 0; b < c.p.n_bodies(); ++b) w[b] = Vec3(std::sin(b), std::cos(3 * b), 0.5);
   add_friction(c.p, c.r, 0.5, w);
-  c.p.resistance[0].assign(c.p.n_contacts(), 0.2);
+  c.p.resistance[0].assign(c.p.n_contacts(), rolling);
+  c.p.resistance[1].assign(c.p.n_contacts(), twisting);
   std::vector<Vec3> u_free(c.p.u_free);
   u_free.insert(u_free.end(), w.begin(), w.end());
   const double e_free = kinetic2(c.p, u_free);
   const double tol = 1e-8;
   auto run = [&](const char *name) {
-    auto solver = hardcontact::make_solver(name, hardcontact::ContactLaw::Rolling);
+    auto solver = hardcontact::make_solver(name, law);
     SerialOps ops;
     SolverSettings s;
     s.tol = tol;
@@ -422,6 +433,17 @@ TEST(Friction, RollingSolversAgreeAndConserveMomentum)
     for (int r = 0; r < c.p.n_contacts(); ++r)
       EXPECT_GE(c.p.predicted_gap(r, s.u), -2.0 * tol * c.p.size[r]) << name;
   }
+}
+
+TEST(Friction, RollingSolversAgreeAndConserveMomentum)
+{
+  resistance_solvers_agree(hardcontact::ContactLaw::Rolling, 0.2, 0.0);
+}
+
+TEST(Friction, TwistingSolversAgreeAndConserveMomentum)
+{
+  resistance_solvers_agree(hardcontact::ContactLaw::Twisting, 0.0, 0.2);
+  resistance_solvers_agree(hardcontact::ContactLaw::RollingTwisting, 0.2, 0.2);
 }
 
 TEST(Friction, ExactSolverHasNoFriction)
@@ -477,15 +499,34 @@ TEST(Friction, CoulombLocalSolveMeetsTheLaw)
   for (int c : cases) EXPECT_GT(c, 100);    // every case met
 }
 
-// A disc of one component (what twisting resistance will be: a torque about the normal, |m|
-// <= coef m_n): DiscLaw<TangentialDisc, it> projects onto {|t| <= mu n, |s| <= c n} as the
-// search over the normal value finds, its local solve clamps the component to [-c n, c n],
-// and its violation is 0 at a solution of the law (sliding on both discs) and > 0 off it.
+// Three discs, {|t| <= mu n, |r| <= mur n, |s| <= mut n}: the same point as the search.
+TEST(Friction, RollingTwistingProjectionIsTheNearestPoint)
+{
+  auto shrink = [](double len, double cap) { return len > cap ? (len > 0.0 ? cap / len : 0.0) : 1.0; };
+  projection_matches_search<hardcontact::RollingTwistingLaw>(
+      13,
+      [&](const double *m, const hardcontact::Coefficients &k, double n) {
+        const double ft = shrink(std::hypot(m[1], m[2]), k.friction * n);
+        const double fr = shrink(std::hypot(m[3], m[4]), k.resistance[0] * n);
+        const double s = std::max(-k.resistance[1] * n, std::min(k.resistance[1] * n, m[5]));
+        const double q[6] = {n, ft * m[1], ft * m[2], fr * m[3], fr * m[4], s};
+        double d = 0.0;
+        for (int a = 0; a < 6; ++a) d += (q[a] - m[a]) * (q[a] - m[a]);
+        return d;
+      },
+      [](const double *p, const hardcontact::Coefficients &k, int trial) {
+        EXPECT_LE(std::hypot(p[1], p[2]), k.friction * p[0] * (1 + 1e-12) + 1e-300) << trial;
+        EXPECT_LE(std::hypot(p[3], p[4]), k.resistance[0] * p[0] * (1 + 1e-12) + 1e-300) << trial;
+        EXPECT_LE(std::abs(p[5]), k.resistance[1] * p[0] * (1 + 1e-12) + 1e-300) << trial;
+      });
+}
+
+// A disc of one component, twisting's (a torque about the normal, |m| <= coef m_n):
+// TwistingLaw projects onto {|t| <= mu n, |s| <= c n} as the search over the normal value
+// finds, its local solve clamps the component to [-c n, c n], and its violation is 0 at a
+// solution of the law (sliding on both discs) and > 0 off it.
 namespace {
-struct OneComponentDisc : hardcontact::ResistanceDisc<0> {    // a test disc, at index 0
-  static constexpr int size = 1;
-};
-using OneComponentLaw = hardcontact::DiscLaw<hardcontact::TangentialDisc, OneComponentDisc>;
+using OneComponentLaw = hardcontact::TwistingLaw;
 }    // namespace
 
 TEST(Friction, OneComponentDiscProjectsAndSolves)
@@ -496,16 +537,16 @@ TEST(Friction, OneComponentDiscProjectsAndSolves)
       [](const double *m, const hardcontact::Coefficients &k, double n) {
         const double len = std::hypot(m[1], m[2]), cap = k.friction * n;
         const double f = len > cap ? (len > 0.0 ? cap / len : 0.0) : 1.0;
-        const double s = std::max(-k.resistance[0] * n, std::min(k.resistance[0] * n, m[3]));
+        const double s = std::max(-k.resistance[1] * n, std::min(k.resistance[1] * n, m[3]));
         return (n - m[0]) * (n - m[0]) + (f * m[1] - m[1]) * (f * m[1] - m[1]) +
                (f * m[2] - m[2]) * (f * m[2] - m[2]) + (s - m[3]) * (s - m[3]);
       },
       [](const double *p, const hardcontact::Coefficients &k, int trial) {
         EXPECT_LE(std::hypot(p[1], p[2]), k.friction * p[0] * (1 + 1e-12) + 1e-300) << trial;
-        EXPECT_LE(std::abs(p[3]), k.resistance[0] * p[0] * (1 + 1e-12) + 1e-300) << trial;
+        EXPECT_LE(std::abs(p[3]), k.resistance[1] * p[0] * (1 + 1e-12) + 1e-300) << trial;
       });
   // local solve: the normal closes its gap, the one-component disc slides at its bound
-  const hardcontact::Coefficients k{0.5, 0.2};
+  const hardcontact::Coefficients k{0.5, {0.0, 0.2}};
   double mm[4] = {1.0, 0.0, 0.0, 0.0};
   const double g[4] = {-1.0, 0.0, 0.0, -5.0}, d[4] = {1.0, 1.0, 1.0, 1.0};
   OneComponentLaw::local_solve(mm, g, d, k);

@@ -47,7 +47,10 @@ hardcontact_deck_test(NAME phys_cluster_ranks_full SCRIPT integration/test_phys_
 #               dissipation output, oblique pairs stick/slide at 7/2 mu, friction 0
 #               bit-identical to none, a spinning gas: energy never grows, linear and angular
 #               momentum exact, ranks agree
-foreach(_effect restitution moving_wall region_wall moving_region cohesion friction)
+#  twisting     a sphere spinning about the vertical on a floor stops at t* = 2 w0 r / (5 mut g)
+#               and the contact dissipates 1/2 I w0^2; with rolling too, each stops as alone; a
+#               head-on pair's twist slides by 5/4 mut v0 / r or sticks, angular momentum exact
+foreach(_effect restitution moving_wall region_wall moving_region cohesion friction twisting)
   set(_hosts launcher modern liggghts)
   if(_effect MATCHES "region")
     set(_hosts launcher modern)    # LIGGGHTS 3.8 has no region walls (lammps_compat.h)

@@ -61,11 +61,12 @@ def sphere_mass(radius, density):
 
 
 def write_sphere_data(path, box, radius, density, x, v=None, title="hardcontact physics test",
-                      host=None, dimension=3):
+                      host=None, dimension=3, omega=None):
     """hctools.write_data with radii (2 r is exact in floating point): type 1, every float
-    exact; host and dimension make a 2d file give LIGGGHTS the masses LAMMPS gives."""
+    exact; host and dimension make a 2d file give LIGGGHTS the masses LAMMPS gives; omega:
+    the spins (default 0)."""
     hc.write_data(path, box, 2.0 * np.asarray(radius, dtype=float), density, x, v, title=title,
-                  host=host, dimension=dimension)
+                  host=host, dimension=dimension, omega=omega)
 
 
 def positions(frame):

@@ -16,13 +16,16 @@
 #include "coulomb.h"
 #include "normal.h"
 #include "rolling.h"
+#include "twisting.h"
 
 #define HARDCONTACT_LAWS_WITH(X, ...)           \
   X(NormalLaw, Normal, , __VA_ARGS__)           \
   X(CoulombLaw, Coulomb, Friction, __VA_ARGS__) \
-  X(RollingLaw, Rolling, Rolling, __VA_ARGS__)
+  X(RollingLaw, Rolling, Rolling, __VA_ARGS__)       \
+  X(TwistingLaw, Twisting, Twisting, __VA_ARGS__)    \
+  X(RollingTwistingLaw, RollingTwisting, RollingTwisting, __VA_ARGS__)
 
-#define HARDCONTACT_RESISTANCES(X) X(RollingDisc)
+#define HARDCONTACT_RESISTANCES(X) X(RollingDisc) X(TwistingDisc)
 
 #define HARDCONTACT_DETAIL_ENUMERATOR(Law, Enumerator, Suffix, unused) Enumerator,
 #define HARDCONTACT_DETAIL_COUNT(Law, Enumerator, Suffix, unused) +1
