@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <initializer_list>
 #include <string>
 
 #include "atom.h"
@@ -94,6 +95,7 @@ std::vector<hardcontact::MeshWallSource::Spec> mesh_specs(const hardcontact::Fix
     spec.theta = m.theta;
     spec.point = hardcontact::Vec3(m.point[0], m.point[1], m.point[2]);
     spec.axis = hardcontact::Vec3(m.axis[0], m.axis[1], m.axis[2]);
+    spec.friction = o.mesh_friction[specs.size()];
     specs.push_back(spec);
   }
   return specs;
@@ -104,14 +106,18 @@ std::vector<hardcontact::MeshWallSource::Spec> mesh_specs(const hardcontact::Fix
 FixHardContact::FixHardContact(LAMMPS *lmp, int narg, char **arg) :
     Fix(lmp, narg, arg), options_(checked_options(lmp, narg, arg)),
     solver_(hardcontact::make_solver(options_.solver_name, options_.contact_law())), reach_(lmp), pairs_(lmp, groupbit),
-    walls_(lmp, groupbit, std::move(options_.walls), std::move(options_.wall_variables)),
-    regions_(lmp, groupbit, std::move(options_.wall_regions)),
-    meshes_(lmp, groupbit, mesh_specs(options_)), obstacles_(walls_, regions_, meshes_),
+    walls_(lmp, groupbit, std::move(options_.walls), std::move(options_.wall_variables),
+           options_.plane_friction),
+    regions_(lmp, groupbit, std::move(options_.wall_regions), options_.region_friction),
+    meshes_(lmp, groupbit, mesh_specs(options_)),
     history_(memory, options_.contact_law()),
-    step_(lmp, groupbit, ops_, reach_, {&pairs_, &walls_, &regions_, &meshes_}),
+    step_(lmp, groupbit, ops_, reach_, {&pairs_}),
     integrate_(lmp, groupbit),
     outputs_(lmp, this, options_.has_friction()), virial_(lmp)
 {
+  for (hardcontact::WallSource *source :
+       std::initializer_list<hardcontact::WallSource *>{&walls_, &regions_, &meshes_})
+    add_wall_source(source);
   walls_.check_in_box();
   integrate_.set_inertia(options_.disc ? 0.5 : 0.4);
 
@@ -181,24 +187,13 @@ void FixHardContact::init()
     error->all(FLERR, "Fix hardcontact does not support triclinic boxes: use an orthogonal box");
   if (utils::strmatch(update->integrate_style, "^respa"))
     error->all(FLERR, "Fix hardcontact does not support run_style respa: use verlet");
-  walls_.init_positions();
-  walls_.check_in_box();
-  regions_.init(static_cast<int>(walls_.walls().size()));
   reach_.init(this, HARDCONTACT_FIX_INSTANCE);
-  // a mesh's rows reach r_max + skin: half the list's 2 r_max + skin, and a little more
-  meshes_.init(static_cast<int>(walls_.walls().size()) + regions_.n_walls(), 0.5 * reach_.cutoff(),
-               modify->find_fix(id));
-  wall_friction_.clear();
-  if (options_.has_wall_friction()) {
-    // wall indices: the planes, then kFacesPerRegion per region (region_wall_source.h), then
-    // each mesh's features (mesh_wall_source.h)
-    wall_friction_ = options_.plane_friction;
-    for (const double mu : options_.region_friction)
-      wall_friction_.insert(wall_friction_.end(), hardcontact::RegionWallSource::kFacesPerRegion,
-                            mu);
-    for (int k = 0; k < meshes_.n_meshes(); ++k)
-      wall_friction_.insert(wall_friction_.end(), meshes_.n_walls(k), options_.mesh_friction[k]);
-  }
+  // each wall source's init, then the wall codes in the list's order and each wall's own
+  // friction (sources/obstacles.h); a mesh's rows reach r_max + skin: half the list's
+  // 2 r_max + skin, and a little more
+  if (!obstacles_.init({0.5 * reach_.cutoff(), modify->find_fix(id)}, wall_friction_))
+    error->all(FLERR, "Fix hardcontact: the walls are too many to number (the meshes' "
+                      "vertices, edges and triangles count one each): split or coarsen them");
   if (!solver_->traits().distributed && comm->nprocs > 1)
     hardcontact::compat::error_all(
         error, FLERR,
@@ -206,6 +201,12 @@ void FixHardContact::init()
         "the whole contact operator): use apgd, pgs or uzawa with mpirun",
         options_.solver_name);
   deck_checks_.check(lmp, *this, regions_.regions(), !options_.restitution.empty());
+}
+
+void FixHardContact::add_wall_source(hardcontact::WallSource *source)
+{
+  obstacles_.add(source);
+  step_.add_source(source);
 }
 
 void FixHardContact::init_list(int, NeighList *ptr)
@@ -232,11 +233,9 @@ void FixHardContact::setup(int vflag)
   if (vflag_global) std::memcpy(virial, virial_.last_global(), sizeof(virial));
   post_force(vflag);
   ops_.take_times();    // HARDCONTACT_COMM_TIMES counts from here
-  walls_.init_positions();    // moving walls where their variables put them at this step
-  regions_.at_current_step();    // moving regions likewise
-  meshes_.at_current_step();    // and moving meshes
+  obstacles_.at_current_step();    // moving walls where they stand at this step
   step_.check_bodies(walls_.walls());
-  regions_.check_sides();
+  obstacles_.check_sides();
   step_.find_overlaps(*solver_);
   outputs_.start_of_run(step_.problem(), obstacles_, options_.settings.tol);
   step_.clear();
@@ -249,11 +248,8 @@ void FixHardContact::initial_integrate(int vflag)
   hardcontact::StepEffects effects;
   effects.restitution = &options_.restitution;
   effects.bounce_vmin = options_.bounce_vmin;
-  effects.wall_velocity = walls_.advance(update->dt);
-  regions_.advance();    // moving regions to t^{n+1}, with their velocities over the step
-  meshes_.advance(update->dt);    // moving meshes likewise
-  effects.moving_obstacles =
-      regions_.moving() || meshes_.moving() || effects.wall_velocity != nullptr;
+  obstacles_.advance(update->dt);    // moving walls to t^{n+1}, with their velocities
+  effects.moving_obstacles = obstacles_.moving();
   effects.cohesion = &options_.cohesion;
   effects.law = options_.contact_law();
   if (options_.has_friction()) {
@@ -267,7 +263,7 @@ void FixHardContact::initial_integrate(int vflag)
       dump_prefix_.empty() ? step_.solve(*solver_, options_.settings,
                                          options_.warmstart ? &history_ : nullptr, effects)
                            : solve_and_dump(effects);
-  walls_.commit(update->dt);    // the outputs measure q^{n+1} against the walls at t^{n+1}
+  obstacles_.commit(update->dt);    // the outputs measure q^{n+1} against the walls at t^{n+1}
   if (options_.warmstart) history_resized();
   outputs_.record_step(result, step_.problem(), step_.mu(), options_.contact_law(), step_.u(),
                        obstacles_, options_.settings);

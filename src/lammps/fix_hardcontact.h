@@ -63,6 +63,11 @@ class FixHardContact : public Fix {
   double reach_cutoff() const { return reach_.cutoff(); }
   // values per atom of the forward communication in progress (LIGGGHTS's pack_comm returns it)
   int forward_values_per_atom() const { return ops_.per_body(); }
+  // Appends a source of walls (a host's own obstacles) to the list after the planes, regions
+  // and meshes of the keywords: its walls take the next wall codes at each init, its rows
+  // are offered every pass, its hooks are called every step (sources/contact_source.h).
+  // Call it from the constructor; the source must outlive the fix.
+  void add_wall_source(hardcontact::WallSource *source);
 
  private:
   hardcontact::FixOptions options_;    // the keywords (keywords.h)
@@ -71,8 +76,10 @@ class FixHardContact : public Fix {
   hardcontact::NeighborReach reach_;
   hardcontact::PairSource pairs_;
   hardcontact::PlaneWallSource walls_;
-  hardcontact::RegionWallSource regions_;    // after walls_: wall indices follow the planes'
-  hardcontact::MeshWallSource meshes_;       // then the regions'
+  hardcontact::RegionWallSource regions_;
+  hardcontact::MeshWallSource meshes_;
+  // the wall sources, in the order their wall codes follow: walls_, regions_, meshes_, then
+  // any added (add_wall_source)
   hardcontact::Obstacles obstacles_;
   hardcontact::ContactHistory history_;
   hardcontact::ContactStep step_;
@@ -80,8 +87,8 @@ class FixHardContact : public Fix {
   hardcontact::Outputs outputs_;
   hardcontact::ContactVirial virial_;
   hardcontact::DeckChecks deck_checks_;    // the rest of the deck (deck_checks.h)
-  // by wall index: a wall's own friction (wall ... friction mu), FixOptions::kByType for the
-  // type's; empty when no wall has its own
+  // by wall index: a wall's own friction (wall ... friction mu), negative for the type's;
+  // empty when no wall has its own (Obstacles::init)
   std::vector<double> wall_friction_;
   // HARDCONTACT_DUMP_PROBLEMS: developers' file prefix for every step's problem
   // (core/problem_dump.h), empty when unset

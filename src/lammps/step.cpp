@@ -43,7 +43,7 @@ StepResult ContactStep::solve(Solver &solver, const SolverSettings &settings,
   block_ = law_block(effects.law);
   const Bodies bodies = build_bodies(solver.traits().needs_owner_map, effects);
   RowSink sink(problem_, atom->tag, atom->nlocal, free_speed_);
-  sink.set_wall_velocities(effects.wall_velocity, effects.moving_obstacles);
+  sink.set_moving(effects.moving_obstacles);
   sink.begin_candidates(1.0);
   offer_rows(bodies, sink);
   Targets targets{bodies.recovery_speed, free_speed_scale(problem_, ops_), settings.tol};

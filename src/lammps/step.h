@@ -35,9 +35,7 @@ struct StepEffects {
   // speed below which contacts stay inelastic.
   const std::vector<double> *restitution = nullptr;
   double bounce_vmin = 0.0;
-  // per plane wall (by wall_index), null when every plane is at rest
-  const std::vector<Vec3> *wall_velocity = nullptr;
-  // some wall moves (a plane or a region): rows carry their wall's velocity
+  // some wall moves (a plane, a region, a mesh...): rows carry their wall's velocity
   bool moving_obstacles = false;
   // F per type pair ((ntypes + 1)^2), empty for none (core/cohesion.h)
   const std::vector<double> *cohesion = nullptr;
@@ -67,6 +65,8 @@ class ContactStep : protected LAMMPS_NS::Pointers {
   // Setup: stops with one collective error naming the first atom with a non-finite or
   // non-positive value, or with its centre behind a wall.
   void check_bodies(const std::vector<PlaneWall> &walls) const;
+  // One more source of rows (before the run): its rows are offered in every pass.
+  void add_source(const ContactSource *source) { sources_.push_back(source); }
   // Step 0 (setup): only the rows overlapping at q^n, for the diagnostics the run starts from.
   void find_overlaps(const Solver &solver);
   void clear();

@@ -35,4 +35,44 @@ class ContactSource {
   virtual void visit(const Bodies &bodies, RowSink &sink) const = 0;
 };
 
+// What a wall source's init needs from the fix (Obstacles::init).
+struct WallSourceInit {
+  double reach;      // how far a sphere's rows reach: its radius + the skin, at most
+  int fix_index;     // the fix's index in Modify (a mover of the walls must come before it)
+};
+
+// A source of walls (planes, region surfaces, meshes, or one a host adds). Its walls take
+// the wall codes first_wall() .. first_wall() + n_walls() - 1 (wall_index of its rows),
+// handed out by Obstacles in the order of its list at each run's init, so warm starts and
+// outputs follow a wall from step to step. It carries its own Coulomb coefficient per wall,
+// offers each row with its gap at t^n and, if it moves, the wall's velocity at the contact
+// (RowSink::offer), and follows its walls through the steps with the hooks below.
+class WallSource : public ContactSource, public WallGaps {
+ public:
+  // Finds what it needs in the deck (errors name the keyword); n_walls() is known after it.
+  virtual void init(const WallSourceInit &) {}
+  virtual int n_walls() const = 0;
+  // Setup: moving walls where they stand now (t^n of the run's first step).
+  virtual void at_current_step() {}
+  // Setup: stops with an error if an atom's centre is behind one of its walls.
+  virtual void check_sides() const {}
+  // Before a step at t^{n+1} (LAMMPS's step counter already advanced): moving walls to where
+  // they will be, with their velocities over the step of length h.
+  virtual void advance(double) {}
+  // After the step's solve (the outputs then measure q^{n+1} against the walls at t^{n+1}).
+  virtual void commit(double) {}
+  // Whether some wall moves this step (after advance): rows then carry their wall's velocity.
+  virtual bool moving() const { return false; }
+  // Wall w's own Coulomb coefficient, or a negative value: the atom type's (the pair table).
+  virtual double friction(int w) const = 0;
+  // The gap of a sphere (centre x, radius) to its wall w (diagnostics): wall_gap.
+
+  void assign_walls(int first) { first_wall_ = first; }
+  int first_wall() const { return first_wall_; }
+  bool owns(int w) const { return w >= first_wall_ && w < first_wall_ + n_walls(); }
+
+ protected:
+  int first_wall_ = 0;
+};
+
 }    // namespace hardcontact

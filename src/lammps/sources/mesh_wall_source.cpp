@@ -181,8 +181,10 @@ void MeshWallSource::advance(double h)
   h_ = h;
 }
 
-void MeshWallSource::init(int first_wall, double reach, int fix_index)
+void MeshWallSource::init(const WallSourceInit &at)
 {
+  const double reach = at.reach;
+  const int fix_index = at.fix_index;
   found_.clear();    // the skin may have changed
   place_.resize(meshes_.size());
   for (size_t k = 0; k < meshes_.size(); ++k) {
@@ -225,18 +227,17 @@ void MeshWallSource::init(int first_wall, double reach, int fix_index)
   }
   ahead_ = false;
   for (TriangleMesh &m : meshes_) m.index(reach);
-  first_wall_ = first_wall;
   offset_.clear();
   int next = 0;
   for (const TriangleMesh &m : meshes_) {
     offset_.push_back(next);
-    if (m.n_features() > std::numeric_limits<int>::max() / 2 - first_wall - next)
+    if (m.n_features() > std::numeric_limits<int>::max() / 4 - next)
       compat::error_all(lmp_->error, FLERR,
                         "Fix hardcontact wall stl: the meshes have too many features (vertices, "
                         "edges and triangles) to number: split or coarsen them");
     next += m.n_features();
   }
-  end_wall_ = first_wall_ + next;
+  n_walls_ = next;
 }
 
 // A mesh fix's triangles on every process, in the order of their global ids (each process
@@ -393,11 +394,16 @@ void MeshWallSource::visit(const Bodies &, RowSink &sink) const
   }
 }
 
-double MeshWallSource::gap(int w, const Vec3 &x, double radius) const
+size_t MeshWallSource::mesh_of(int w) const
+{
+  const auto it = std::upper_bound(offset_.begin(), offset_.end(), w - first_wall_);
+  return static_cast<size_t>(it - offset_.begin()) - 1;
+}
+
+double MeshWallSource::wall_gap(int w, const Vec3 &x, double radius) const
 {
   const int local = w - first_wall_;
-  const auto it = std::upper_bound(offset_.begin(), offset_.end(), local);
-  const size_t k = static_cast<size_t>(it - offset_.begin()) - 1;
+  const size_t k = mesh_of(w);
   const Placement &p = place_[k];
   return meshes_[k].distance(local - offset_[k], p.moves() ? p.to_mesh(x) : x) - radius;
 }

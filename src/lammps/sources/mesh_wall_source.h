@@ -22,7 +22,7 @@ class LAMMPS;
 
 namespace hardcontact {
 
-class MeshWallSource : public ContactSource {
+class MeshWallSource : public WallSource {
  public:
   struct Spec {
     std::string fix_id;     // `wall mesh ID`: a LIGGGHTS fix mesh/surface, else:
@@ -31,30 +31,30 @@ class MeshWallSource : public ContactSource {
     std::string move[3];    // equal-style variables of the displacement ("" for none)
     std::string theta;      // equal-style variable of the angle (radians), "" for none
     Vec3 point = Vec3::Zero(), axis = Vec3::UnitZ();
+    double friction = -1.0;    // its own Coulomb coefficient, negative for the atom type's
   };
   // Reads every file (process 0 reads, every process builds the mesh); a file that cannot be
   // read stops the run with an ERROR naming it and the problem, on every process. A mesh fix's
   // triangles are gathered at the first init (LIGGGHTS distributes them at its setup).
   MeshWallSource(LAMMPS_NS::LAMMPS *lmp, int groupbit, const std::vector<Spec> &specs);
-  // first_wall: the wall index of the first mesh's first feature (after planes and regions);
-  // mesh k's feature f is wall first_wall + offset(k) + f, stable across steps. reach: the
+  // Mesh k's feature f is wall first_wall() + offset(k) + f, stable across steps. reach: the
   // farthest a sphere's rows reach (largest radius + skin), which sizes the meshes' cells.
   // fix_index: the fix's own index in Modify (a mesh fix's mover must come before it).
-  void init(int first_wall, double reach, int fix_index);
+  void init(const WallSourceInit &at) override;
   // Moving meshes where their variables put them now (setup: q^n and the meshes at t^n).
-  void at_current_step();
+  void at_current_step() override;
   // Before a step at t^{n+1} (LAMMPS's step counter already advanced): moving meshes where
   // they will be at its end, and their motion over the step. Rows then measure the gap to the
   // mesh at t^{n+1} and offer D = that gap - h n . u_wall (the convention of region walls).
-  void advance(double h);
-  bool moving() const;
+  void advance(double h) override;
+  bool moving() const override;
   void visit(const Bodies &bodies, RowSink &sink) const override;
   bool empty() const { return meshes_.empty(); }
   int n_meshes() const { return static_cast<int>(meshes_.size()); }
-  int n_walls(int k) const { return meshes_[k].n_features(); }
-  bool owns(int w) const { return !meshes_.empty() && w >= first_wall_ && w < end_wall_; }
+  int n_walls() const override { return n_walls_; }
+  double friction(int w) const override { return specs_[mesh_of(w)].friction; }
   // Gap of a sphere of this radius centred at x to the feature of wall w (diagnostics).
-  double gap(int w, const Vec3 &x, double radius) const;
+  double wall_gap(int w, const Vec3 &x, double radius) const override;
 
  private:
   LAMMPS_NS::LAMMPS *lmp_;
@@ -99,7 +99,8 @@ class MeshWallSource : public ContactSource {
   void place_fix_mesh(size_t k);
   void read_surface_velocity(size_t k);
   std::vector<int> offset_;    // per mesh, its first feature's wall index less first_wall_
-  int first_wall_ = 0, end_wall_ = 0;
+  int n_walls_ = 0;
+  size_t mesh_of(int w) const;    // the mesh of wall w
   // Per mesh, the rows of every owned sphere as its step's first pass found them: the passes
   // after it (missed rows, step.h) offer the same positions again, and with a fine mesh the
   // search was most of the step (bench/studies/mesh_walls). Reused while every owned centre

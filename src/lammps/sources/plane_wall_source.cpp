@@ -32,8 +32,13 @@ void PlaneWallSource::visit(const Bodies &, RowSink &sink) const
     for (int w = 0; w < nw; ++w) {
       const double d = walls_[w].gap(x[i], radius[i]);
       // most spheres are far from most walls: turned down before the row is assembled
-      if (sink.plane_too_far(i, wall_body(w), d)) continue;
-      sink.offer(i, wall_body(w), walls_[w].normal(), d, radius[i]);
+      const double speed = any_moving_ ? velocity_[w].norm() : 0.0;
+      if (sink.wall_too_far(i, d, speed)) continue;
+      const int j = wall_body(first_wall_ + w);
+      if (any_moving_)    // every row of a moving plane carries its velocity (zero: at rest)
+        sink.offer(i, j, walls_[w].normal(), d, radius[i], velocity_[w]);
+      else
+        sink.offer(i, j, walls_[w].normal(), d, radius[i]);
     }
   }
 }
@@ -77,9 +82,9 @@ void PlaneWallSource::init_positions()
   }
 }
 
-const std::vector<Vec3> *PlaneWallSource::advance(double h)
+void PlaneWallSource::advance(double h)
 {
-  if (!any_moving_) return nullptr;
+  if (!any_moving_) return;
   const int nw = static_cast<int>(walls_.size());
   for (int w = 0; w < nw; ++w) {
     if (var_index_[w] < 0) continue;
@@ -92,7 +97,6 @@ const std::vector<Vec3> *PlaneWallSource::advance(double h)
     walls_[w].velocity = (next - walls_[w].coord) / h;
     velocity_[w] = walls_[w].velocity_vector();
   }
-  return &velocity_;
 }
 
 void PlaneWallSource::commit(double h)

@@ -15,31 +15,43 @@ class LAMMPS;
 
 namespace hardcontact {
 
-class PlaneWallSource : public ContactSource {
+class PlaneWallSource : public WallSource {
  public:
   // variables: per wall, the name of the equal-style variable giving its position (a moving
-  // wall), or "" for a fixed one.
+  // wall), or "" for a fixed one; friction: per wall its own Coulomb coefficient, negative for
+  // the atom type's.
   PlaneWallSource(LAMMPS_NS::LAMMPS *lmp, int groupbit, std::vector<PlaneWall> walls,
-                  std::vector<std::string> variables) :
-      lmp_(lmp), groupbit_(groupbit), walls_(std::move(walls)), variables_(std::move(variables))
+                  std::vector<std::string> variables, std::vector<double> friction) :
+      lmp_(lmp), groupbit_(groupbit), walls_(std::move(walls)), variables_(std::move(variables)),
+      friction_(std::move(friction))
   {
   }
   void visit(const Bodies &bodies, RowSink &sink) const override;
 
-  // Moving walls: find their variables (error if missing or not equal-style) and place every
-  // moving wall where its variable says now.
-  void init_positions();
-  // Before a step at time t^{n+1} (LAMMPS's step counter already advanced): each moving wall's
-  // velocity (x(t^{n+1}) - x(t^n)) / h. Returns the velocities by wall index, or null when no
-  // wall moves (Targets and RowSink then do nothing for walls).
-  const std::vector<Vec3> *advance(double h);
-  // After the step's solve: the moving walls are at x(t^{n+1}).
-  void commit(double h);
+  // The moving walls' variables (errors if missing or not equal-style), every moving wall
+  // where its variable says now, and the walls inside the box.
+  void init(const WallSourceInit &) override
+  {
+    init_positions();
+    check_in_box();
+  }
+  int n_walls() const override { return static_cast<int>(walls_.size()); }
+  void at_current_step() override { init_positions(); }
+  // Each moving wall's velocity (x(t^{n+1}) - x(t^n)) / h.
+  void advance(double h) override;
+  // The moving walls at x(t^{n+1}).
+  void commit(double h) override;
+  bool moving() const override { return any_moving_; }
+  double friction(int w) const override { return friction_[w - first_wall_]; }
+  double wall_gap(int w, const Vec3 &x, double radius) const override
+  {
+    return walls_[w - first_wall_].gap(x.data(), radius);
+  }
 
+  // Find the variables and place every moving wall where its variable says now.
+  void init_positions();
   // Stops with an error if a wall lies on a periodic direction or outside a fixed boundary.
   void check_in_box() const;
-  // The wall of row body j < 0 (contact_source.h).
-  const PlaneWall &wall_of_row(int j) const { return walls_[wall_index(j)]; }
   const std::vector<PlaneWall> &walls() const { return walls_; }
 
  private:
@@ -47,8 +59,9 @@ class PlaneWallSource : public ContactSource {
   int groupbit_;
   std::vector<PlaneWall> walls_;
   std::vector<std::string> variables_;
+  std::vector<double> friction_;
   std::vector<int> var_index_;       // per wall, -1 for a fixed wall
-  std::vector<Vec3> velocity_;       // per wall, for Targets and RowSink
+  std::vector<Vec3> velocity_;       // per wall, offered with its rows while some wall moves
   bool any_moving_ = false;
   double evaluate(int w) const;
 };

@@ -18,9 +18,8 @@ using namespace LAMMPS_NS;
 
 namespace hardcontact {
 
-void RegionWallSource::init(int first_wall)
+void RegionWallSource::init(const WallSourceInit &)
 {
-  first_wall_ = first_wall;
   regions_.clear();
   if (!ids_.empty() && !compat::kRegionFacesNumbered)
     compat::error_all(lmp_->error, FLERR,
@@ -58,13 +57,13 @@ void RegionWallSource::at_current_step()
   ahead_ = false;
 }
 
-void RegionWallSource::advance()
+void RegionWallSource::advance(double h)
 {
   if (!moving_) return;
   for (Region *region : regions_)
     if (region->dynamic_check()) compat::region_move_to_step(region);
   ahead_ = true;
-  h_ = lmp_->update->dt;
+  h_ = h;
 }
 
 // Every face of every region within the skin of an owned sphere: a sphere cannot move more
@@ -133,7 +132,7 @@ void RegionWallSource::check_sides() const
                       all, ids_[which_all]);
 }
 
-double RegionWallSource::gap(int w, const Vec3 &x, double radius) const
+double RegionWallSource::wall_gap(int w, const Vec3 &x, double radius) const
 {
   const int k = (w - first_wall_) / kFacesPerRegion;
   const int iwall = (w - first_wall_) % kFacesPerRegion;

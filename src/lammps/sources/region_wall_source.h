@@ -18,38 +18,37 @@ class Region;
 
 namespace hardcontact {
 
-class RegionWallSource : public ContactSource {
+class RegionWallSource : public WallSource {
  public:
   // Wall indices of region k's faces: first_wall + kFacesPerRegion k + iwall (LAMMPS's face
   // id), stable across steps (warm start, outputs).
   static constexpr int kFacesPerRegion = 64;
 
-  RegionWallSource(LAMMPS_NS::LAMMPS *lmp, int groupbit, std::vector<std::string> ids) :
-      lmp_(lmp), groupbit_(groupbit), ids_(std::move(ids))
+  // friction: per region its own Coulomb coefficient (every face's), negative for the atom
+  // type's
+  RegionWallSource(LAMMPS_NS::LAMMPS *lmp, int groupbit, std::vector<std::string> ids,
+                   std::vector<double> friction) :
+      lmp_(lmp), groupbit_(groupbit), ids_(std::move(ids)), friction_(std::move(friction))
   {
   }
-  // Finds the regions (error: unknown ID); first_wall: the wall index of the first region's
-  // faces (after the plane walls).
-  void init(int first_wall);
+  // Finds the regions (error: unknown ID).
+  void init(const WallSourceInit &) override;
   // Moving regions where their variables put them now (setup: q^n and the region at t^n).
-  void at_current_step();
+  void at_current_step() override;
   // Before a step at t^{n+1} (LAMMPS's step counter already advanced): moving regions where
-  // they will be at its end, and their velocities over the step. Rows then measure the gap
-  // to the surface at t^{n+1} and offer D = that gap - h n . u_wall, the gap of eq. 15 whose
-  // target Targets moves back by + h n . u_wall (a plane wall's convention).
-  void advance();
-  bool moving() const { return moving_; }
+  // they will be at its end (h: the step), and their velocities over the step. Rows then
+  // measure the gap to the surface at t^{n+1} and offer D = that gap - h n . u_wall, the gap
+  // of eq. 15 whose target Targets moves back by + h n . u_wall (a plane wall's convention).
+  void advance(double h) override;
+  bool moving() const override { return moving_; }
   void visit(const Bodies &bodies, RowSink &sink) const override;
   // Stops with an error if an atom's centre is on the obstacle side of a region's surface.
-  void check_sides() const;
-  bool owns(int w) const
-  {
-    return w >= first_wall_ && w < first_wall_ + kFacesPerRegion * static_cast<int>(regions_.size());
-  }
-  // the wall indices the regions hold (after init): kFacesPerRegion each
-  int n_walls() const { return kFacesPerRegion * static_cast<int>(ids_.size()); }
+  void check_sides() const override;
+  // the wall indices the regions hold: kFacesPerRegion each
+  int n_walls() const override { return kFacesPerRegion * static_cast<int>(ids_.size()); }
+  double friction(int w) const override { return friction_[(w - first_wall_) / kFacesPerRegion]; }
   // Gap of a sphere of this radius centred at x to the face of wall w (diagnostics).
-  double gap(int w, const Vec3 &x, double radius) const;
+  double wall_gap(int w, const Vec3 &x, double radius) const override;
   bool empty() const { return ids_.empty(); }
   const std::vector<LAMMPS_NS::Region *> &regions() const { return regions_; }    // after init
 
@@ -57,8 +56,8 @@ class RegionWallSource : public ContactSource {
   LAMMPS_NS::LAMMPS *lmp_;
   int groupbit_;
   std::vector<std::string> ids_;
+  std::vector<double> friction_;
   std::vector<LAMMPS_NS::Region *> regions_;
-  int first_wall_ = 0;
   bool moving_ = false;          // some region moves or changes shape
   bool ahead_ = false;           // moving regions stand at t^{n+1} (advance), not t^n
   double h_ = 0.0;               // the step advance() moved them by

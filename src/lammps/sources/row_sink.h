@@ -31,26 +31,21 @@ class RowSink {
   void begin_missed(const std::vector<Vec3> &u, double speed_scale, double tol,
                     std::vector<double> &speed);
 
-  // A row against a pair or a plane wall (whose velocity, if it moves, is its plane's).
+  // A row against a pair or a wall at rest. D: the gap at t^n (eq. 15).
   void offer(int i, int j, const Vec3 &n, double d, double size)
   {
-    offer_row(i, j, n, d, size,
-              is_wall(j) && plane_velocity_ ? &(*plane_velocity_)[wall_index(j)] : nullptr);
+    offer_row(i, j, n, d, size, nullptr);
   }
-  // A row against a wall whose contact point moves at u_wall (a moving region's surface):
-  // its velocity enters both tests like a partner's, and the row keeps it (Targets, slip).
+  // A row against a wall whose contact point moves at u_wall over the step (a moving plane,
+  // region surface or mesh): its velocity enters both tests like a partner's, and the row
+  // keeps it (Targets, slip).
   void offer(int i, int j, const Vec3 &n, double d, double size, const Vec3 &u_wall)
   {
     offer_row(i, j, n, d, size, &u_wall);
   }
-  // Moving walls: plane (null: every plane at rest) holds each plane's velocity; moving: some
-  // wall (plane or region) moves (StepEffects::moving_obstacles), so every row records its
-  // wall's velocity.
-  void set_wall_velocities(const std::vector<Vec3> *plane, bool moving)
-  {
-    plane_velocity_ = plane;
-    moving_ = moving;
-  }
+  // moving: some wall moves this step (StepEffects::moving_obstacles), so every row records
+  // its wall's velocity (zero for a pair or a wall at rest).
+  void set_moving(bool moving) { moving_ = moving; }
   // How far apart the surfaces of pair (i, j) may be and the pair still become a row in this
   // pass (the candidate test, or in the missed-row pass the gap u could close): a source may
   // skip a pair farther than that without computing its normal (offer_row would turn it down).
@@ -59,10 +54,10 @@ class RowSink {
     return u_ == nullptr ? scale_ * p_.h * (speed_[i] + speed_[j])
                          : p_.h * ((*speed_u_)[i] + (*speed_u_)[j]);
   }
-  // The same for sphere i against plane wall j (wall_body): whether its gap d is too wide.
-  bool plane_too_far(int i, int j, double d) const
+  // The same for sphere i against a wall moving at speed wall (0 at rest): whether its gap d
+  // is too wide.
+  bool wall_too_far(int i, double d, double wall) const
   {
-    const double wall = plane_velocity_ ? (*plane_velocity_)[wall_index(j)].norm() : 0.0;
     return d > (u_ == nullptr ? scale_ * p_.h * (speed_[i] + wall) : p_.h * ((*speed_u_)[i] + wall));
   }
   // Rows added since the last begin_*.
@@ -99,7 +94,6 @@ class RowSink {
   double scale_ = 1.0;
   const std::vector<Vec3> *u_ = nullptr;    // set in the missed-row pass only
   const std::vector<double> *speed_u_ = nullptr;    // |u| per body, in that pass
-  const std::vector<Vec3> *plane_velocity_ = nullptr;
   bool moving_ = false;
   double speed_scale_ = 0.0;
   double tol_ = 0.0;
