@@ -42,8 +42,7 @@ const char *damping_note(bool restitution_given)
 
 }    // namespace
 
-void DeckChecks::check(LAMMPS *lmp, Fix &fix, const std::vector<Region *> &regions,
-                       bool restitution_given)
+void DeckChecks::check(LAMMPS *lmp, Fix &fix, bool restitution_given)
 {
   Modify *modify = lmp->modify;
   const bool speak = !warned_ && lmp->comm->me == 0;
@@ -84,19 +83,7 @@ void DeckChecks::check(LAMMPS *lmp, Fix &fix, const std::vector<Region *> &regio
                     "{}, friction -> 'friction mu', rolling -> 'rolling mur', twisting -> "
                     "'twisting mut', cohesion -> 'cohesion'",
                     fix.id, force->pair_style, damping_note(restitution_given));
-#if !HARDCONTACT_LIGGGHTS
-  for (const Region *region : regions)
-    if (speak && region->openflag)
-      compat::warning(lmp->error, FLERR,
-                      "Fix hardcontact {}: wall region {} has open faces: a sphere reaching "
-                      "an open face has no contact there and leaves unseen (the check that "
-                      "stops a run when a sphere is on the wrong side of a wall cannot tell "
-                      "an exit from a crossing); close the region, or bound it with plane "
-                      "walls or another region",
-                      fix.id, region->id);
-#else
-  (void) regions;    // LIGGGHTS: no region walls (RegionWallSource::init stops first)
-#endif
+  // (a region wall with open faces: RegionWallSource::init warns)
   warned_ = true;
 }
 

@@ -6,8 +6,7 @@
 //     ones, so the spheres overlap and bounce as both models say - a WARNING naming the line;
 //   - `fix wall/gran*` on the fix's atoms: soft walls on top of (or instead of) the fix's own -
 //     a WARNING naming the fix and the `wall` keyword that replaces it;
-//   - a region wall with open faces: a sphere leaving through an open face has no contact
-//     there, and the wrong-side check (regions_.check_sides) cannot see it cross - a WARNING.
+// (A region wall with open faces is its source's to warn about: RegionWallSource::init.)
 // Warnings are printed once per fix (on the first run), by rank 0; the counts of shared atoms
 // are summed over all ranks first, so every rank takes the same decision.
 #pragma once
@@ -17,19 +16,16 @@
 namespace LAMMPS_NS {
 class Fix;
 class LAMMPS;
-class Region;
 }    // namespace LAMMPS_NS
 
 namespace hardcontact {
 
 class DeckChecks {
  public:
-  // From FixHardContact::init: `fix` is the hardcontact fix, `regions` its region walls.
+  // From FixHardContact::init: `fix` is the hardcontact fix.
   // `restitution_given`: whether the fix line has the restitution keyword (the messages say
   // what the soft deck's damping becomes).
-  void check(LAMMPS_NS::LAMMPS *lmp, LAMMPS_NS::Fix &fix,
-             const std::vector<LAMMPS_NS::Region *> &regions,
-             bool restitution_given);
+  void check(LAMMPS_NS::LAMMPS *lmp, LAMMPS_NS::Fix &fix, bool restitution_given);
 
  private:
   bool warned_ = false;

@@ -6,7 +6,6 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
-#include <initializer_list>
 #include <string>
 
 #include "atom.h"
@@ -108,16 +107,24 @@ FixHardContact::FixHardContact(LAMMPS *lmp, int narg, char **arg) :
     solver_(hardcontact::make_solver(options_.solver_name, options_.contact_law())), reach_(lmp), pairs_(lmp, groupbit),
     walls_(lmp, groupbit, std::move(options_.walls), std::move(options_.wall_variables),
            options_.plane_friction),
-    regions_(lmp, groupbit, std::move(options_.wall_regions), options_.region_friction),
     meshes_(lmp, groupbit, mesh_specs(options_)),
     history_(memory, options_.contact_law()),
     step_(lmp, groupbit, ops_, reach_, {&pairs_}),
     integrate_(lmp, groupbit),
     outputs_(lmp, this, options_.has_friction()), virial_(lmp)
 {
-  for (hardcontact::WallSource *source :
-       std::initializer_list<hardcontact::WallSource *>{&walls_, &regions_, &meshes_})
-    add_wall_source(source);
+  // the wall sources, in the order of their wall codes: planes, each kind of the kinds' table
+  // (sources/wall_kinds.cpp) with its walls in the order of the fix line, meshes
+  add_wall_source(&walls_);
+  for (const hardcontact::WallKind &kind : hardcontact::wall_kinds()) {
+    std::vector<hardcontact::WallSpec> specs;
+    for (const auto &w : options_.kind_walls)
+      if (w.kind == &kind) specs.push_back(w.spec);
+    if (specs.empty()) continue;
+    kind_sources_.push_back(kind.create(lmp, groupbit, specs));
+    add_wall_source(kind_sources_.back().get());
+  }
+  add_wall_source(&meshes_);
   walls_.check_in_box();
   integrate_.set_inertia(options_.disc ? 0.5 : 0.4);
 
@@ -191,7 +198,7 @@ void FixHardContact::init()
   // each wall source's init, then the wall codes in the list's order and each wall's own
   // friction (sources/obstacles.h); a mesh's rows reach r_max + skin: half the list's
   // 2 r_max + skin, and a little more
-  if (!obstacles_.init({0.5 * reach_.cutoff(), modify->find_fix(id)}, wall_friction_))
+  if (!obstacles_.init({0.5 * reach_.cutoff(), modify->find_fix(id), id}, wall_friction_))
     error->all(FLERR, "Fix hardcontact: the walls are too many to number (the meshes' "
                       "vertices, edges and triangles count one each): split or coarsen them");
   if (!solver_->traits().distributed && comm->nprocs > 1)
@@ -200,7 +207,7 @@ void FixHardContact::init()
         "Fix hardcontact solver {} runs on one processor only (it assembles "
         "the whole contact operator): use apgd, pgs or uzawa with mpirun",
         options_.solver_name);
-  deck_checks_.check(lmp, *this, regions_.regions(), !options_.restitution.empty());
+  deck_checks_.check(lmp, *this, !options_.restitution.empty());
 }
 
 void FixHardContact::add_wall_source(hardcontact::WallSource *source)

@@ -18,7 +18,7 @@
 #include "sources/pair_source.h"
 #include "sources/obstacles.h"
 #include "sources/plane_wall_source.h"
-#include "sources/region_wall_source.h"
+#include "sources/wall_kinds.h"
 #include "step.h"
 
 #include <memory>
@@ -76,10 +76,12 @@ class FixHardContact : public Fix {
   hardcontact::NeighborReach reach_;
   hardcontact::PairSource pairs_;
   hardcontact::PlaneWallSource walls_;
-  hardcontact::RegionWallSource regions_;
+  // walls of the kinds' table (sources/wall_kinds.cpp: region surfaces, ...), one source per
+  // kind on the fix line
+  std::vector<std::unique_ptr<hardcontact::WallSource>> kind_sources_;
   hardcontact::MeshWallSource meshes_;
-  // the wall sources, in the order their wall codes follow: walls_, regions_, meshes_, then
-  // any added (add_wall_source)
+  // the wall sources, in the order their wall codes follow: walls_, kind_sources_, meshes_,
+  // then any added (add_wall_source)
   hardcontact::Obstacles obstacles_;
   hardcontact::ContactHistory history_;
   hardcontact::ContactStep step_;

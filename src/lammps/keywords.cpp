@@ -161,11 +161,11 @@ void parse_wall(LAMMPS *lmp, char **values, int n, FixOptions &o)
     o.mesh_friction.push_back(FixOptions::kByType);
     return;
   }
-  if (plane == "region") {
-    if (n != 2)
-      lmp->error->all(FLERR, "Fix hardcontact wall region takes one value, the region ID");
-    o.wall_regions.emplace_back(values[1]);
-    o.region_friction.push_back(FixOptions::kByType);
+  if (const WallKind *kind = find_wall_kind(plane)) {    // sources/wall_kinds.cpp
+    WallSpec spec;
+    spec.values.assign(values + 1, values + n);
+    spec.friction = FixOptions::kByType;
+    o.kind_walls.push_back({kind, spec});
     return;
   }
   if (n != 3)
@@ -177,9 +177,13 @@ void parse_wall(LAMMPS *lmp, char **values, int n, FixOptions &o)
   else if (plane == "zplane") dim = 2;
   else
     compat::error_all(lmp->error, FLERR,
-                      "Fix hardcontact wall '{}' is unknown: use xplane, yplane, zplane, "
-                      "region, stl or mesh",
-                      plane);
+                      "Fix hardcontact wall '{}' is unknown: use xplane, yplane, zplane, {}"
+                      "stl or mesh",
+                      plane, [] {
+                        std::string names;
+                        for (const WallKind &k : wall_kinds()) names += std::string(k.name) + ", ";
+                        return names;
+                      }());
   if (dim == 2 && lmp->domain->dimension == 2)
     lmp->error->all(FLERR, "Fix hardcontact wall zplane is not allowed in a 2d simulation");
   const bool has_lo = strcmp(values[1], "NULL") != 0;
@@ -212,7 +216,7 @@ void parse_wall(LAMMPS *lmp, char **values, int n, FixOptions &o)
 // `friction mu` right after a wall's values: that wall's own coefficient (every plane of an
 // `xplane lo hi`, every face of a region). Returns the words it read.
 int parse_wall_friction(LAMMPS *lmp, char **arg, int narg, int iarg, size_t planes_before,
-                        size_t regions_before, size_t meshes_before, FixOptions &o)
+                        size_t kinds_before, size_t meshes_before, FixOptions &o)
 {
   if (iarg + 1 >= narg)
     lmp->error->all(FLERR, "Fix hardcontact wall ... friction needs a value (the wall's own "
@@ -230,7 +234,7 @@ int parse_wall_friction(LAMMPS *lmp, char **arg, int narg, int iarg, size_t plan
                       "before the wall keyword",
                       arg[iarg + 2]);
   for (size_t k = planes_before; k < o.plane_friction.size(); ++k) o.plane_friction[k] = mu;
-  for (size_t k = regions_before; k < o.region_friction.size(); ++k) o.region_friction[k] = mu;
+  for (size_t k = kinds_before; k < o.kind_walls.size(); ++k) o.kind_walls[k].spec.friction = mu;
   for (size_t k = meshes_before; k < o.mesh_friction.size(); ++k) o.mesh_friction[k] = mu;
   return 2;
 }
@@ -449,15 +453,26 @@ FixOptions parse_keywords(LAMMPS *lmp, int narg, char **arg, int first)
                         found->name, found->nvalues, found->doc);
     int n = found->nvalues;
     const bool stl = found->parse == parse_wall && strcmp(arg[iarg + 1], "stl") == 0;
+    // `wall KIND` of the kinds' table: the kind says how many values follow its name
+    const WallKind *kind = found->parse == parse_wall ? find_wall_kind(arg[iarg + 1]) : nullptr;
+    if (kind) {
+      n = 1 + kind->nvalues;
+      const int extra = iarg + n + 1;    // the word after its values: a keyword or 'friction'
+      if (iarg + n >= narg || (extra < narg && !is_keyword(arg[extra]) &&
+                               strcmp(arg[extra], "friction") != 0))
+        compat::error_all(lmp->error, FLERR, "Fix hardcontact wall {} takes {} value(s) ({})",
+                          kind->name, kind->nvalues, kind->usage);
+    }
     // optional values: present when the next word is not a keyword name
-    if (!stl && found->optional > 0 && iarg + n + 1 < narg && !is_keyword(arg[iarg + n + 1])) {
+    if (!stl && !kind && found->optional > 0 && iarg + n + 1 < narg &&
+        !is_keyword(arg[iarg + n + 1])) {
       if (iarg + n + found->optional >= narg)
         compat::error_all(lmp->error, FLERR, "Fix hardcontact {} takes {} or {} value(s) after it",
                           found->name, found->nvalues, found->nvalues + found->optional);
       n += found->optional;
     }
     const size_t planes_before = options.plane_friction.size();
-    const size_t regions_before = options.region_friction.size();
+    const size_t kinds_before = options.kind_walls.size();
     const size_t meshes_before = options.mesh_friction.size();
     found->parse(lmp, arg + iarg + 1, n, options);
     iarg += 1 + n;
@@ -474,7 +489,7 @@ FixOptions parse_keywords(LAMMPS *lmp, int narg, char **arg, int first)
           iarg += parse_wall_rotate(lmp, arg, narg, iarg, options);
           turned = true;
         } else if (!rubbed && iarg < narg && strcmp(arg[iarg], "friction") == 0) {
-          iarg += parse_wall_friction(lmp, arg, narg, iarg, planes_before, regions_before,
+          iarg += parse_wall_friction(lmp, arg, narg, iarg, planes_before, kinds_before,
                                       meshes_before, options);
           rubbed = true;
         } else {

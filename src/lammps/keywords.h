@@ -3,6 +3,8 @@
 // A new keyword is a row there, a field here, and a paragraph in doc/fix_hardcontact.md.
 #pragma once
 
+#include "sources/wall_kinds.h"
+
 #include "../core/plane_wall.h"
 #include "../core/solver.h"
 
@@ -31,7 +33,13 @@ struct FixOptions {
   bool cone_given = false;
   std::vector<PlaneWall> walls;
   std::vector<std::string> wall_variables;    // per wall: equal-style variable name, or ""
-  std::vector<std::string> wall_regions;      // IDs of regions whose surfaces are walls
+  // walls of a kind in the table of sources/wall_kinds.cpp (`wall region ID`, ...), in the
+  // order of the fix line, each with its own friction (WallSpec::friction)
+  struct KindWall {
+    const WallKind *kind;
+    WallSpec spec;
+  };
+  std::vector<KindWall> kind_walls;
   // triangle-mesh walls (`wall stl FILE [scale s]`): the file and the factor on its lengths
   struct MeshWall {
     std::string fix_id;    // `wall mesh ID` (LIGGGHTS's fix mesh/surface), else the file:
@@ -47,10 +55,9 @@ struct FixOptions {
   };
   std::vector<MeshWall> wall_meshes;
   // A wall's own Coulomb coefficient (`wall ... friction mu`), per plane wall (as walls) and
-  // per region (as wall_regions); kByType: the pair value of the atom's type with itself.
+  // per mesh; kByType: the pair value of the atom's type with itself.
   static constexpr double kByType = -1.0;
   std::vector<double> plane_friction;
-  std::vector<double> region_friction;
   std::vector<double> mesh_friction;    // per mesh wall (as wall_meshes)
   bool warmstart = true;
   // restitution e per type pair, (ntypes + 1)^2 row-major; empty: inelastic (the paper)
@@ -69,7 +76,7 @@ struct FixOptions {
   bool has_friction() const
   {
     return any_positive(friction) || any_positive(plane_friction) ||
-           any_positive(region_friction) || any_positive(mesh_friction) || resistances() != 0;
+           any_positive(kind_friction()) || any_positive(mesh_friction) || resistances() != 0;
   }
   // whether a wall's friction value is its own (not kByType)
   static bool own_friction(double v) { return v != kByType; }
@@ -77,11 +84,18 @@ struct FixOptions {
   {
     for (const double v : plane_friction)
       if (own_friction(v)) return true;
-    for (const double v : region_friction)
+    for (const double v : kind_friction())
       if (own_friction(v)) return true;
     for (const double v : mesh_friction)
       if (own_friction(v)) return true;
     return false;
+  }
+  // the kind walls' own coefficients, in their order
+  std::vector<double> kind_friction() const
+  {
+    std::vector<double> mu;
+    for (const KindWall &w : kind_walls) mu.push_back(w.spec.friction);
+    return mu;
   }
   bool has_resistance(int r) const { return any_positive(resistance[r]); }
   // bit r: resistance r has a positive coefficient

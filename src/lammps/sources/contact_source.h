@@ -37,8 +37,9 @@ class ContactSource {
 
 // What a wall source's init needs from the fix (Obstacles::init).
 struct WallSourceInit {
-  double reach;      // how far a sphere's rows reach: its radius + the skin, at most
-  int fix_index;     // the fix's index in Modify (a mover of the walls must come before it)
+  double reach;          // how far a sphere's rows reach: its radius + the skin, at most
+  int fix_index;         // the fix's index in Modify (a mover of the walls must come before it)
+  const char *fix_id;    // for messages ("Fix hardcontact ID: ...")
 };
 
 // A source of walls (planes, region surfaces, meshes, or one a host adds). Its walls take

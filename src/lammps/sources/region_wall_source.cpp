@@ -1,10 +1,12 @@
 #include "region_wall_source.h"
 
 #include "row_sink.h"
+#include "wall_kinds.h"
 
 #include "../lammps_compat.h"
 
 #include "atom.h"
+#include "comm.h"
 #include "domain.h"
 #include "error.h"
 #include "lammps.h"
@@ -18,7 +20,19 @@ using namespace LAMMPS_NS;
 
 namespace hardcontact {
 
-void RegionWallSource::init(const WallSourceInit &)
+std::unique_ptr<WallSource> RegionWallSource::create(LAMMPS *lmp, int groupbit,
+                                                     const std::vector<WallSpec> &walls)
+{
+  std::vector<std::string> ids;
+  std::vector<double> friction;
+  for (const WallSpec &w : walls) {
+    ids.push_back(w.values[0]);
+    friction.push_back(w.friction);
+  }
+  return std::make_unique<RegionWallSource>(lmp, groupbit, std::move(ids), std::move(friction));
+}
+
+void RegionWallSource::init(const WallSourceInit &at)
 {
   regions_.clear();
   if (!ids_.empty() && !compat::kRegionFacesNumbered)
@@ -46,7 +60,22 @@ void RegionWallSource::init(const WallSourceInit &)
                         id, style);
     if (region->dynamic_check()) moving_ = true;
     regions_.push_back(region);
+#if !HARDCONTACT_LIGGGHTS    // (LIGGGHTS has no region walls: the error above stops first)
+    // A sphere passing through an open face has no contact there, and the wrong-side check
+    // (check_sides) cannot tell an exit from a crossing: say so once per fix.
+    if (!warned_open_ && region->openflag && lmp_->comm->me == 0)
+      compat::warning(lmp_->error, FLERR,
+                      "Fix hardcontact {}: wall region {} has open faces: a sphere reaching "
+                      "an open face has no contact there and leaves unseen (the check that "
+                      "stops a run when a sphere is on the wrong side of a wall cannot tell "
+                      "an exit from a crossing); close the region, or bound it with plane "
+                      "walls or another region",
+                      at.fix_id, region->id);
+#else
+    (void) at;
+#endif
   }
+  warned_open_ = true;
   ahead_ = false;
 }
 

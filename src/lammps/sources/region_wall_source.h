@@ -8,6 +8,7 @@
 
 #include "contact_source.h"
 
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -17,6 +18,8 @@ class Region;
 }
 
 namespace hardcontact {
+
+struct WallSpec;
 
 class RegionWallSource : public WallSource {
  public:
@@ -31,8 +34,11 @@ class RegionWallSource : public WallSource {
       lmp_(lmp), groupbit_(groupbit), ids_(std::move(ids)), friction_(std::move(friction))
   {
   }
-  // Finds the regions (error: unknown ID).
-  void init(const WallSourceInit &) override;
+  // `wall region ID` (wall_kinds.cpp): one source for every region wall of the fix line.
+  static std::unique_ptr<WallSource> create(LAMMPS_NS::LAMMPS *lmp, int groupbit,
+                                            const std::vector<WallSpec> &walls);
+  // Finds the regions (error: unknown ID); warns once about a region with open faces.
+  void init(const WallSourceInit &at) override;
   // Moving regions where their variables put them now (setup: q^n and the region at t^n).
   void at_current_step() override;
   // Before a step at t^{n+1} (LAMMPS's step counter already advanced): moving regions where
@@ -59,6 +65,7 @@ class RegionWallSource : public WallSource {
   std::vector<double> friction_;
   std::vector<LAMMPS_NS::Region *> regions_;
   bool moving_ = false;          // some region moves or changes shape
+  bool warned_open_ = false;     // the open-face warning, once per fix
   bool ahead_ = false;           // moving regions stand at t^{n+1} (advance), not t^n
   double h_ = 0.0;               // the step advance() moved them by
 };
