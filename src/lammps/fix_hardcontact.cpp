@@ -273,7 +273,7 @@ void FixHardContact::initial_integrate(int vflag)
   obstacles_.commit(update->dt);    // the outputs measure q^{n+1} against the walls at t^{n+1}
   if (options_.warmstart) history_resized();
   outputs_.record_step(result, step_.problem(), step_.mu(), options_.contact_law(), step_.u(),
-                       obstacles_, options_.settings);
+                       obstacles_, options_.settings, ops_);
   if (vflag_global || vflag_atom) {
     virial_.tally(step_.problem(), step_.mu(), step_.block(), step_.u(), update->dt, obstacles_,
                   vflag_global ? virial : nullptr, vflag_atom != 0);

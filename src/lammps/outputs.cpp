@@ -46,7 +46,11 @@ void Outputs::clear_per_atom(int i)
 void Outputs::start_of_run(const ContactProblem &p, const WallGaps &walls,
                            double tol)
 {
-  overlap_diagnostics(p, nullptr, 0.0, walls);
+  double worst[2], all[2];
+  local_overlaps(p, nullptr, 0.0, walls, worst);
+  MPI_Allreduce(worst, all, 2, MPI_DOUBLE, MPI_MAX, world);
+  diag_[MAX_OVERLAP] = all[0];
+  diag_[MAX_OVERLAP_RELATIVE] = all[1];
   diag_[ITERATIONS] = diag_[CANDIDATES] = diag_[ACTIVE] = diag_[RESIDUAL] = 0.0;
   diag_[RHO] = diag_[ROUNDS] = diag_[CLEARING_WORK] = diag_[FRICTION_WORK] = 0.0;
   diag_[MAXITER_HITS] = static_cast<double>(maxiter_hits_);
@@ -65,11 +69,21 @@ void Outputs::start_of_run(const ContactProblem &p, const WallGaps &walls,
 void Outputs::record_step(const StepResult &r, const ContactProblem &p,
                           const std::vector<double> &mu, ContactLaw law,
                           const std::vector<Vec3> &u, const WallGaps &walls,
-                          const SolverSettings &settings)
+                          const SolverSettings &settings, DistributedOps &ops)
 {
   record_solve(r, settings);
-  per_atom_and_local(p, mu, law, u);
-  overlap_diagnostics(p, &u, update->dt, walls);
+  // sums: rows, active rows, friction's work, the clearing work; maxima: overlap, relative
+  double v[6];
+  per_atom_and_local(p, mu, law, u, v);
+  v[3] = r.clearing_work;
+  local_overlaps(p, &u, update->dt, walls, v + 4);
+  ops.sum_max_all(v, 4, 2);
+  diag_[CANDIDATES] = v[0];
+  diag_[ACTIVE] = v[1];
+  diag_[FRICTION_WORK] = v[2];
+  diag_[CLEARING_WORK] = v[3];
+  diag_[MAX_OVERLAP] = v[4];
+  diag_[MAX_OVERLAP_RELATIVE] = v[5];
 }
 
 void Outputs::record_solve(const StepResult &r, const SolverSettings &settings)
@@ -86,7 +100,6 @@ void Outputs::record_solve(const StepResult &r, const SolverSettings &settings)
                       update->ntimestep, r.report.iterations, settings.maxiter, r.report.residual,
                       settings.tol, fix_->id, MAXITER_HITS + 1);
   }
-  diag_[CLEARING_WORK] = r.clearing_work;
   diag_[ITERATIONS] = r.iterations;
   diag_[RESIDUAL] = r.report.residual;
   diag_[RHO] = r.report.rho;
@@ -109,7 +122,7 @@ void Outputs::end_of_run(const SolverSettings &settings)
 // A row is counted once over all processes (ContactProblem::counted): a pair across processes
 // is held by both, and counted by the side whose atom has the smaller ID.
 void Outputs::per_atom_and_local(const ContactProblem &p, const std::vector<double> &mu,
-                                 ContactLaw law, const std::vector<Vec3> &u)
+                                 ContactLaw law, const std::vector<Vec3> &u, double *counts)
 {
   const int nlocal = atom->nlocal;
   const int nc = p.n_contacts();
@@ -131,7 +144,7 @@ void Outputs::per_atom_and_local(const ContactProblem &p, const std::vector<doub
   // h M^-1 sum_c G_c^T mu_c (eq. 16), the kinetic energy the contacts change is exactly
   // h sum_c mu_c . G_c (u_free + u^{n+1}) / 2: the tangential terms, -h F_t . (mean slip),
   // are what friction dissipates (>= 0: Coulomb's force opposes the slip).
-  double counts[3] = {0.0, 0.0, 0.0};
+  counts[0] = counts[1] = counts[2] = 0.0;
   if (block > 1) {
     const int nb = p.n_bodies();
     u_free_.resize(2 * static_cast<size_t>(nb));
@@ -156,11 +169,6 @@ void Outputs::per_atom_and_local(const ContactProblem &p, const std::vector<doub
         Law::subtract_work(p, c, &mu[static_cast<size_t>(block) * c], u, u_free_, counts[2]);
     }
   });
-  double all[3];
-  MPI_Allreduce(counts, all, 3, MPI_DOUBLE, MPI_SUM, world);
-  diag_[CANDIDATES] = all[0];
-  diag_[ACTIVE] = all[1];
-  diag_[FRICTION_WORK] = all[2];
 
   const int ncols = local_columns();
   if (nrows > nlocal_rows_max_) {
@@ -191,12 +199,12 @@ void Outputs::per_atom_and_local(const ContactProblem &p, const std::vector<doub
 // Largest overlap over the rows at positions q + h u (h = 0: at q), in distance units and
 // relative to the contact size. Other listed pairs satisfy eq. 15 (the missed-row check), and
 // D >= linearised gap (D is convex), so they cannot overlap beyond the tolerance either.
-void Outputs::overlap_diagnostics(const ContactProblem &p, const std::vector<Vec3> *u, double h,
-                                  const WallGaps &walls)
+void Outputs::local_overlaps(const ContactProblem &p, const std::vector<Vec3> *u, double h,
+                             const WallGaps &walls, double *worst) const
 {
   double **x = atom->x;
   double *radius = atom->radius;
-  double worst[2] = {0.0, 0.0};
+  worst[0] = worst[1] = 0.0;
   const int nc = p.n_contacts();
   for (int c = 0; c < nc; ++c) {
     const int i = p.body_i[c], j = p.body_j[c];
@@ -215,10 +223,6 @@ void Outputs::overlap_diagnostics(const ContactProblem &p, const std::vector<Vec
       worst[1] = MAX(worst[1], -d / p.size[c]);
     }
   }
-  double all[2];
-  MPI_Allreduce(worst, all, 2, MPI_DOUBLE, MPI_MAX, world);
-  diag_[MAX_OVERLAP] = all[0];
-  diag_[MAX_OVERLAP_RELATIVE] = all[1];
 }
 
 }    // namespace hardcontact

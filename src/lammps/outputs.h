@@ -57,17 +57,22 @@ class Outputs : protected LAMMPS_NS::Pointers {
   void start_of_run(const ContactProblem &p, const WallGaps &walls, double tol);
   // After the solve of a step, before the atoms move: all outputs of the step.
   // mu: block values per row (1, or 3 with friction).
+  // Its global figures (rows, active rows, friction's and clearing's work, largest overlaps)
+  // take one reduction of ops (sums and maxima at once).
   void record_step(const StepResult &r, const ContactProblem &p, const std::vector<double> &mu,
                    ContactLaw law, const std::vector<Vec3> &u, const WallGaps &walls,
-                   const SolverSettings &settings);
+                   const SolverSettings &settings, DistributedOps &ops);
   void end_of_run(const SolverSettings &settings);
 
  private:
   void record_solve(const StepResult &r, const SolverSettings &settings);
-  void overlap_diagnostics(const ContactProblem &p, const std::vector<Vec3> *u, double h,
-                           const WallGaps &walls);
+  // this process's largest overlap at q + h u (h = 0: at q), absolute and relative (worst[2])
+  void local_overlaps(const ContactProblem &p, const std::vector<Vec3> *u, double h,
+                      const WallGaps &walls, double *worst) const;
+  // the per-atom and local arrays, and this process's rows, active rows and friction's work
+  // (counts[3])
   void per_atom_and_local(const ContactProblem &p, const std::vector<double> &mu, ContactLaw law,
-                          const std::vector<Vec3> &u);
+                          const std::vector<Vec3> &u, double *counts);
 
   LAMMPS_NS::Fix *fix_;
   bool friction_;

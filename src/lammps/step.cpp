@@ -149,8 +149,9 @@ StepResult ContactStep::solve(Solver &solver, const SolverSettings &settings,
     for (int c = 0; c < nc; ++c) force_[static_cast<size_t>(block_) * c] -= pull_[c];
   }
   // The kinetic energy the solve may add (residual.h, energy_within_bound): the work of the
-  // forces clearing overlaps present at q^n, sum mu max(0, -D) over the rows.
-  result.clearing_work = ops_.sum_all(clearing_work(problem_, mu_, block_));
+  // forces clearing overlaps present at q^n, sum mu max(0, -D) over the rows; this
+  // process's part (the outputs sum it with their own figures, in one reduction).
+  result.clearing_work = clearing_work(problem_, mu_, block_);
   return result;
 }
 
@@ -263,29 +264,35 @@ Bodies ContactStep::build_bodies(bool needs_owner_map, const StepEffects &effect
   for (int i = 0; i < nall; ++i)
     problem_.inv_mass[i] = (mask[i] & groupbit_) ? force->ftm2v / rmass[i] : 0.0;
 
-  tagint bad = 0;
-  double local[2] = {0.0, 0.0};    // largest velocity change from the forces, largest radius
+  // One reduction (MAX) for what the step needs of all processes here: the first atom with a
+  // non-finite free velocity (its ID as a double: exact below 2^53), the largest velocity
+  // change from the forces, the largest radius, and the largest free speed (the gap's
+  // round-off, below). A NaN speed would poison the maximum: it is taken over finite ones.
+  enum { kBad, kKick, kRadius, kSpeed, kValues };
+  double local[kValues] = {0.0, 0.0, 0.0, 0.0};
   for (int i = 0; i < nlocal; ++i) {
     Vec3 u(v[i]);
     if (mask[i] & groupbit_) {
       const Vec3 kick = (dtfm / rmass[i]) * Vec3(f[i]);
       u += kick;
-      local[0] = MAX(local[0], kick.norm());
-      local[1] = MAX(local[1], atom->radius[i]);
+      local[kKick] = MAX(local[kKick], kick.norm());
+      local[kRadius] = MAX(local[kRadius], atom->radius[i]);
     }
-    if (!u.allFinite() && !bad) bad = atom->tag[i];
+    if (!u.allFinite()) {
+      if (local[kBad] == 0.0) local[kBad] = static_cast<double>(atom->tag[i]);
+    } else {
+      local[kSpeed] = MAX(local[kSpeed], u.norm());
+    }
     problem_.u_free[i] = u;
   }
-  tagint bad_all;
-  MPI_Allreduce(&bad, &bad_all, 1, MPI_LMP_TAGINT, MPI_MAX, world);
-  if (bad_all)
+  double global[kValues];
+  MPI_Allreduce(local, global, kValues, MPI_DOUBLE, MPI_MAX, world);
+  if (global[kBad] != 0.0)
     compat::error_all(error, FLERR,
                       "Fix hardcontact: atom {} has a non-finite velocity or force at step {}: "
                       "check the forces acting on it",
-                      bad_all, update->ntimestep);
-  double global[2];
-  MPI_Allreduce(local, global, 2, MPI_DOUBLE, MPI_MAX, world);
-  reach_.check_radius(global[1]);
+                      static_cast<tagint>(global[kBad]), update->ntimestep);
+  reach_.check_radius(global[kRadius]);
   ops_.forward(doubles(problem_.u_free), kDoublesPerVec3);
 
   // Friction: the bodies rotate. omega^n + h I^-1 torque, as fix nve/sphere would (its full
@@ -322,11 +329,7 @@ Bodies ContactStep::build_bodies(bool needs_owner_map, const StepEffects &effect
   double extent = 0.0;
   for (int d = 0; d < 3; ++d)
     extent = MAX(extent, MAX(fabs(domain->boxlo[d]), fabs(domain->boxhi[d])));
-  double speed = 0.0;
-  for (int i = 0; i < nlocal; ++i) speed = MAX(speed, problem_.u_free[i].norm());
-  double speed_all;
-  MPI_Allreduce(&speed, &speed_all, 1, MPI_DOUBLE, MPI_MAX, world);
-  problem_.gap_roundoff = 16.0 * DBL_EPSILON * (extent + problem_.h * speed_all);
+  problem_.gap_roundoff = 16.0 * DBL_EPSILON * (extent + problem_.h * global[kSpeed]);
 
   // The exact solver assembles the operator: on one process, ghosts are periodic images.
   problem_.owner.clear();
@@ -339,7 +342,7 @@ Bodies ContactStep::build_bodies(bool needs_owner_map, const StepEffects &effect
       problem_.owner[i] = it == owner_index_.end() ? -1 : it->second;
     }
   }
-  return {problem_.u_free, x_owner_, global[0]};
+  return {problem_.u_free, x_owner_, global[kKick]};
 }
 
 }    // namespace hardcontact

@@ -25,7 +25,7 @@ struct StepResult {
   SolveReport report;           // of the last solve round
   int iterations = 0;           // over all rounds
   int rounds = 0;
-  double clearing_work = 0.0;   // over all processes (residual.h, clearing_work)
+  double clearing_work = 0.0;   // this process's part (residual.h; the outputs sum it)
   int kept_undone = 0;          // solves whose kept overlaps were cleared again (0 or 1)
 };
 
