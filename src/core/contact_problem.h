@@ -50,6 +50,10 @@ struct ContactProblem {
   // Absolute round-off of a predicted gap (distance units), from the host's coordinates and
   // speeds; 0 if unknown. No solver is asked for a gap error below it (residual.h).
   double gap_roundoff = 0.0;
+  // V, the free speed scale of the rows (residual.h, free_speed_scale), when the host has
+  // found it for this solve round (it needs V itself, for its targets): the solver then
+  // takes it instead of reducing it again. Negative: unknown, the solver finds it.
+  double speed_scale = -1.0;
   // The bodies may be numbered differently from the last solve's problem (the host's new
   // neighbour list moved them): what a solver keeps per row from one solve to the next
   // (ProjectedCg's subspace) is then stale. True unless the host knows better.

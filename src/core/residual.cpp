@@ -16,7 +16,7 @@ double free_speed_scale(const ContactProblem &p, DistributedOps &ops)
 double row_scales(const ContactProblem &p, double tol, DistributedOps &ops,
                   std::vector<double> &scale)
 {
-  const double v = free_speed_scale(p, ops);
+  const double v = p.speed_scale >= 0.0 ? p.speed_scale : free_speed_scale(p, ops);
   const int nc = p.n_contacts();
   scale.resize(nc);
   for (int c = 0; c < nc; ++c) scale[c] = row_scale(p.size[c], p.h, v, tol, p.gap_roundoff);

@@ -44,7 +44,8 @@ inline double row_scale(double size, double h, double speed_scale, double tol,
   return s * tol > roundoff ? s : roundoff / tol;
 }
 
-// Fills scale[c] = row_scale(...) for every row with V = free_speed_scale(p); returns V.
+// Fills scale[c] = row_scale(...) for every row with V = p.speed_scale if the host gave it,
+// else free_speed_scale(p); returns V.
 double row_scales(const ContactProblem &p, double tol, DistributedOps &ops,
                   std::vector<double> &scale);
 

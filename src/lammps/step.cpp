@@ -46,7 +46,8 @@ StepResult ContactStep::solve(Solver &solver, const SolverSettings &settings,
   sink.set_moving(effects.moving_obstacles);
   sink.begin_candidates(1.0);
   offer_rows(bodies, sink);
-  Targets targets{bodies.recovery_speed, free_speed_scale(problem_, ops_), settings.tol};
+  const double speed_scale = free_speed_scale(problem_, ops_);    // V (core/residual.h)
+  Targets targets{bodies.recovery_speed, speed_scale, settings.tol};
   // Frictionless rows that pushed keep shallow overlaps while solves stay within a budget
   // (core/kept_overlaps.h); the paper's clearing without a warm start or with friction, and
   // for the reference solver
@@ -65,6 +66,10 @@ StepResult ContactStep::solve(Solver &solver, const SolverSettings &settings,
     pair_values_of_rows(*effects.cohesion, 0, row_f_);
     apply_cohesion(problem_, row_f_, settings.tol, ops_, pull_);
   }
+  // The first round's solves take this V: the same rows and u_free, one reduction fewer.
+  // Cohesion has moved u_free since (its solver finds V again), as a later round's new rows
+  // may (prepare_rows).
+  problem_.speed_scale = pull_any_ ? -1.0 : speed_scale;
   if (restitution) {
     // the approach speeds at the start of the step: u^n, ghosts from their owners
     const int nlocal = atom->nlocal;
@@ -107,6 +112,9 @@ StepResult ContactStep::solve(Solver &solver, const SolverSettings &settings,
   StepResult result;
   for (;;) {
     if (targeted < problem_.n_contacts()) prepare_rows();
+    // a later round has new rows on some process: its solves find V again (all processes
+    // alike: a reduction)
+    if (result.rounds > 0) problem_.speed_scale = -1.0;
     if (budgeted) {
       // a solve with kept overlaps within its budget; stopped there, it goes on from its
       // multipliers with the paper's targets and the rest of maxiter (kept_overlaps.h)
