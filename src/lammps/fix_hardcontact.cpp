@@ -104,11 +104,12 @@ std::vector<hardcontact::MeshWallSource::Spec> mesh_specs(const hardcontact::Fix
 
 FixHardContact::FixHardContact(LAMMPS *lmp, int narg, char **arg) :
     Fix(lmp, narg, arg), options_(checked_options(lmp, narg, arg)),
-    solver_(hardcontact::make_solver(options_.solver_name, options_.contact_law())), reach_(lmp), pairs_(lmp, groupbit),
+    law_(options_.contact_law()), solver_(hardcontact::make_solver(options_.solver_name, law_)),
+    reach_(lmp), pairs_(lmp, groupbit),
     walls_(lmp, groupbit, std::move(options_.walls), std::move(options_.wall_variables),
            options_.plane_friction),
     meshes_(lmp, groupbit, mesh_specs(options_)),
-    history_(memory, options_.contact_law()),
+    history_(memory, law_),
     step_(lmp, groupbit, ops_, reach_, {&pairs_}),
     integrate_(lmp, groupbit),
     outputs_(lmp, this, options_.has_friction()), virial_(lmp)
@@ -258,7 +259,7 @@ void FixHardContact::initial_integrate(int vflag)
   obstacles_.advance(update->dt);    // moving walls to t^{n+1}, with their velocities
   effects.moving_obstacles = obstacles_.moving();
   effects.cohesion = &options_.cohesion;
-  effects.law = options_.contact_law();
+  effects.law = law_;
   if (options_.has_friction()) {
     effects.friction = &options_.friction;
     if (!wall_friction_.empty()) effects.wall_friction = &wall_friction_;
@@ -272,7 +273,7 @@ void FixHardContact::initial_integrate(int vflag)
                            : solve_and_dump(effects);
   obstacles_.commit(update->dt);    // the outputs measure q^{n+1} against the walls at t^{n+1}
   if (options_.warmstart) history_resized();
-  outputs_.record_step(result, step_.problem(), step_.mu(), options_.contact_law(), step_.u(),
+  outputs_.record_step(result, step_.problem(), step_.mu(), law_, step_.u(),
                        obstacles_, options_.settings, ops_);
   if (vflag_global || vflag_atom) {
     virial_.tally(step_.problem(), step_.mu(), step_.block(), step_.u(), update->dt, obstacles_,

@@ -71,6 +71,7 @@ class FixHardContact : public Fix {
 
  private:
   hardcontact::FixOptions options_;    // the keywords (keywords.h)
+  hardcontact::ContactLaw law_;        // the law they ask for, found once
   std::unique_ptr<hardcontact::Solver> solver_;
   hardcontact::LammpsOps ops_;
   hardcontact::NeighborReach reach_;

@@ -76,7 +76,7 @@ struct FixOptions {
   bool has_friction() const
   {
     return any_positive(friction) || any_positive(plane_friction) ||
-           any_positive(kind_friction()) || any_positive(mesh_friction) || resistances() != 0;
+           any_kind_friction(0.0) || any_positive(mesh_friction) || resistances() != 0;
   }
   // whether a wall's friction value is its own (not kByType)
   static bool own_friction(double v) { return v != kByType; }
@@ -84,18 +84,17 @@ struct FixOptions {
   {
     for (const double v : plane_friction)
       if (own_friction(v)) return true;
-    for (const double v : kind_friction())
-      if (own_friction(v)) return true;
+    if (any_kind_friction(kByType)) return true;
     for (const double v : mesh_friction)
       if (own_friction(v)) return true;
     return false;
   }
-  // the kind walls' own coefficients, in their order
-  std::vector<double> kind_friction() const
+  // whether a kind wall's own coefficient is above `above` (0: positive; kByType: its own)
+  bool any_kind_friction(double above) const
   {
-    std::vector<double> mu;
-    for (const KindWall &w : kind_walls) mu.push_back(w.spec.friction);
-    return mu;
+    for (const KindWall &w : kind_walls)
+      if (w.spec.friction > above) return true;
+    return false;
   }
   bool has_resistance(int r) const { return any_positive(resistance[r]); }
   // bit r: resistance r has a positive coefficient

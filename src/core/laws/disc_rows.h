@@ -3,9 +3,10 @@
 // and what its multipliers push (eq. 16), its entries of the block A_cc = h^2 G_c M^-1 G_c^T,
 // the coefficient bounding it and the work it dissipates. DualOperator applies any law through
 // these, without knowing which discs it holds. TangentialDisc (Coulomb) is here; a resistance
-// (rolling.h, twisting.h) is a struct deriving from ResistanceDisc<index>, in its law's file,
-// with a line in law_list.h (HARDCONTACT_RESISTANCES): its coefficient, its keyword and its
-// per-row values then come from that index.
+// (rolling.h, twisting.h) is a struct deriving from ResistanceDisc<index> (or CoupleDisc, a
+// resistance whose multipliers are a couple about its axes: every row member but the axes and
+// the coupling), in its law's file, with a line in law_list.h (HARDCONTACT_RESISTANCES): its
+// coefficient, its keyword and its per-row values then come from that index.
 //
 // Members (p the problem, c the row, m or g the disc's own components):
 //   size                         components (2: a plane such as the tangential one; 1: an axis)
@@ -116,6 +117,66 @@ struct ResistanceDisc {
   static double coefficient(const Coefficients &k) { return k.resistance[Index]; }
   static double &coefficient(Coefficients &k) { return k.resistance[Index]; }
   static double row_coefficient(const ContactProblem &p, int c) { return p.resistance[Index][c]; }
+};
+
+// A resistance whose multipliers are a couple of its own: m_k along its orthonormal axes
+// (Disc::axis, Disc::size of them) with moment R = rolling_radius, opposing the pair's
+// relative spin along those axes (rolling: the tangents, twisting: the normal). Its rows read
+// h R axis_k . (w_j - w_i), it pushes no force, and its entries of A_cc are
+// h^2 R^2 (1/I_i + 1/I_j) on every axis. Disc gives the axes, the texts and the coupling.
+template <int Index, class Disc>
+struct CoupleDisc : ResistanceDisc<Index> {
+  static constexpr bool own_torque = true;
+  // sum_k m_k axis_k
+  static Vec3 along_axes(const ContactProblem &p, int c, const double *m)
+  {
+    if constexpr (Disc::size == 2)
+      return m[0] * Disc::axis(p, c, 0) + m[1] * Disc::axis(p, c, 1);
+    else
+      return m[0] * Disc::axis(p, c, 0);
+  }
+  // h R axis_k . (w_j - w_i)
+  static void gap(const ContactProblem &p, int c, const std::vector<Vec3> &u, const Vec3 &,
+                  double *g)
+  {
+    const Vec3 turn = (p.h * p.rolling_radius(c)) * p.relative_spin(c, u);
+    g[0] = Disc::axis(p, c, 0).dot(turn);
+    if constexpr (Disc::size == 2) g[1] = Disc::axis(p, c, 1).dot(turn);
+  }
+  static void add_linear(const ContactProblem &, int, const double *, Vec3 &) {}
+  // the angular impulse h R sum_k m_k axis_k on j, its opposite on i
+  static void push_spins(const ContactProblem &p, int c, const double *m, double h, int i, int j,
+                         Vec3 *spin_i, Vec3 *spin_j)
+  {
+    const Vec3 twist = (h * p.rolling_radius(c)) * along_axes(p, c, m);
+    if (spin_i) *spin_i -= p.inv_inertia[i] * twist;
+    if (spin_j) *spin_j += p.inv_inertia[j] * twist;
+  }
+  static void add_torque(const ContactProblem &p, int c, const double *m, Vec3 &ti, Vec3 &tj)
+  {
+    const Vec3 twist = p.rolling_radius(c) * along_axes(p, c, m);
+    ti -= twist;
+    tj += twist;
+  }
+  // h^2 R^2 (1/I_i + 1/I_j)
+  static void diagonals(const ContactProblem &p, int c, const RowBodies &b, double *d)
+  {
+    const double r = p.rolling_radius(c);
+    d[0] = b.h2 * r * r * (p.inv_inertia[b.i] + (b.wall ? 0.0 : p.inv_inertia[b.j]));
+    if constexpr (Disc::size == 2) d[1] = d[0];
+  }
+  static double angular_trace(const ContactProblem &p, int c, double)
+  {
+    const double r = p.rolling_radius(c);
+    return Disc::size * (r * r);
+  }
+  // h R m . (w_j - w_i), mean spin of the step
+  static double work(const ContactProblem &p, int c, const double *m, const std::vector<Vec3> &u,
+                     const std::vector<Vec3> &u_free)
+  {
+    const Vec3 spin = 0.5 * (p.relative_spin(c, u) + p.relative_spin(c, u_free));
+    return p.h * p.rolling_radius(c) * along_axes(p, c, m).dot(spin);
+  }
 };
 
 }    // namespace hardcontact

@@ -68,12 +68,17 @@ class WallSource : public ContactSource, public WallGaps {
   virtual double friction(int w) const = 0;
   // The gap of a sphere (centre x, radius) to its wall w (diagnostics): wall_gap.
 
-  void assign_walls(int first) { first_wall_ = first; }
+  // after init (n_walls known)
+  void assign_walls(int first)
+  {
+    first_wall_ = first;
+    end_wall_ = first + n_walls();
+  }
   int first_wall() const { return first_wall_; }
-  bool owns(int w) const { return w >= first_wall_ && w < first_wall_ + n_walls(); }
+  bool owns(int w) const { return w >= first_wall_ && w < end_wall_; }
 
  protected:
-  int first_wall_ = 0;
+  int first_wall_ = 0, end_wall_ = 0;
 };
 
 }    // namespace hardcontact

@@ -30,14 +30,12 @@ class Obstacles : public WallGaps {
       if (next > std::numeric_limits<int>::max() / 2) return false;
     }
     wall_friction.clear();
-    bool own = false;
     for (const WallSource *s : sources_)
-      for (int w = s->first_wall(); w < s->first_wall() + s->n_walls() && !own; ++w)
-        own = s->friction(w) >= 0.0;
-    if (own)
-      for (const WallSource *s : sources_)
-        for (int w = s->first_wall(); w < s->first_wall() + s->n_walls(); ++w)
-          wall_friction.push_back(s->friction(w));
+      for (int w = s->first_wall(); w < s->first_wall() + s->n_walls(); ++w)
+        wall_friction.push_back(s->friction(w));
+    for (const double mu : wall_friction)
+      if (mu >= 0.0) return true;    // some wall has its own
+    wall_friction.clear();
     return true;
   }
   void at_current_step()
