@@ -29,7 +29,9 @@ inline const double *doubles(const std::vector<Vec3> &v)
 // (the one place that encoding is defined). With unit normal n pointing from i towards j
 // (towards the wall), the linearised non-overlap constraint of eq. 15 reads
 //   g_c(u) = gap_c + h n_c . (u_j - u_i) >= 0        (u_wall = 0),
-// i.e. D_ij(q^n) + h G_ij(q^n) . u >= 0 with G_ij = grad D_ij (eq. 1).
+// i.e. D_ij(q^n) + h G_ij(q^n) . u >= 0 with G_ij = grad D_ij (eq. 1). The solvers read the
+// affine part as target_c: gap_c itself unless the host's target terms moved it (an overlap's
+// clearing, a moving wall, restitution: targets.h), which leave gap_c as measured.
 // The j of a row against wall w (w = 0, 1, ... in the host's order), and back.
 constexpr int wall_body(int w) { return -1 - w; }
 constexpr bool is_wall(int j) { return j < 0; }
@@ -43,7 +45,9 @@ struct ContactProblem {
   double h = 0.0;    // time step
   int n_owned = 0;
   std::vector<double> inv_mass;    // per body
-  std::vector<Vec3> u_free;        // per body: u^n + h M^-1 f (eq. 14)
+  // u^n + h M^-1 f (eq. 14), laid out as every velocity vector (n_dof()): per body, then with
+  // friction each body's spin omega^n + h I^-1 torque
+  std::vector<Vec3> u_free;
   // Optional, for solvers that assemble the operator (exact): owner[b] = the owned body that
   // ghost b copies (a periodic image on this process), -1 if owned elsewhere. Empty = unknown.
   std::vector<int> owner;
@@ -61,7 +65,10 @@ struct ContactProblem {
 
   std::vector<int> body_i, body_j;
   std::vector<Vec3> normal;
-  std::vector<double> gap;     // D_c(q^n), distance units
+  std::vector<double> gap;     // D_c(q^n), distance units, as the host measured it
+  // what the solvers ask of row c: target_c + h G_c u >= 0 (eq. 15; gap_c where no target term
+  // applies, targets.h)
+  std::vector<double> target;
   std::vector<double> size;    // r_i + r_j (r_i for a wall): the scale of the tolerance
   // 1 if this process counts row c in global sums. A row coupling an owned body with a ghost
   // is held by both processes; exactly one of them counts it.
@@ -69,12 +76,10 @@ struct ContactProblem {
 
   // Friction (laws/coulomb.h), present only when a scene asks for it. The bodies then rotate:
   // a velocity vector holds n_bodies() linear velocities followed by n_bodies() angular ones
-  // (n_dof()). Per body: 1/I (0 for an obstacle), the radius, omega^n + h I^-1 torque. Per
-  // row: the Coulomb coefficient, two tangents completing the normal to an orthonormal frame,
+  // (n_dof(), u_free too). Per body: 1/I (0 for an obstacle), the radius. Per row: the Coulomb coefficient, two tangents completing the normal to an orthonormal frame,
   // and the arms from each centre to the contact point (complete_frames).
   std::vector<double> inv_inertia;
   std::vector<double> radius;
-  std::vector<Vec3> w_free;
   std::vector<double> friction;
   // per resistance r (rolling, twisting, ...: laws/disc_rows.h) its coefficient per row, empty
   // when no law of the scene reads it
@@ -83,8 +88,8 @@ struct ContactProblem {
   std::vector<double> arm_i, arm_j;
 
   // Moving obstacles, present only when a wall moves: per row, the velocity of the wall at
-  // the contact point (zero on pair rows). Its normal part moves the row's gap target (the
-  // host adds h n . u_wall to gap, core/targets.h); its tangential part is the wall's share of
+  // the contact point (zero on pair rows). Its normal part moves the row's target (Targets
+  // adds h n . u_wall, core/targets.h); its tangential part is the wall's share of
   // the slip (a rotating drum drags the grains it touches).
   std::vector<Vec3> wall_velocity;
 
@@ -100,6 +105,7 @@ struct ContactProblem {
     body_j.clear();
     normal.clear();
     gap.clear();
+    target.clear();
     size.clear();
     counted.clear();
     friction.clear();
@@ -117,6 +123,7 @@ struct ContactProblem {
     body_j.push_back(j);
     normal.push_back(n);
     gap.push_back(d);
+    target.push_back(d);
     size.push_back(s);
   }
 
@@ -192,10 +199,10 @@ struct ContactProblem {
     return (is_wall(j) ? Vec3::Zero() : u[nb + j]) - u[nb + body_i[c]];
   }
 
-  // g_c(u): the gap predicted after the step (eq. 15 left-hand side).
+  // g_c(u): the gap predicted after the step (eq. 15 left-hand side), from the row's target.
   double predicted_gap(int c, const std::vector<Vec3> &u) const
   {
-    return gap[c] + h * normal_speed(c, u);
+    return target[c] + h * normal_speed(c, u);
   }
 };
 

@@ -16,15 +16,18 @@ inline void combine_sum_max(const double *in, double *inout, int len)
   for (int k = n_sum + 1; k < len; ++k) inout[k] = inout[k] > in[k] ? inout[k] : in[k];
 }
 
-// The widest value the core forwards per body: one velocity (3 doubles; contact degrees are
-// one). A host sizes its communication buffers with it.
-constexpr int kMaxForwardPerBody = 3;
+// The widest value the core forwards per body: a body's velocity and spin (two blocks of 3
+// doubles; contact degrees are one). A host sizes its communication buffers with it.
+constexpr int kMaxForwardPerBody = 6;
 
 class DistributedOps {
  public:
   virtual ~DistributedOps() = default;
-  // Copy `per_body` (<= kMaxForwardPerBody) doubles per owned body to every ghost copy.
-  virtual void forward(double *data, int per_body) = 0;
+  // Copy `per_body` doubles per owned body to every ghost copy, for `blocks` arrays at once
+  // (the k-th at data + k block_stride, per_body doubles per body): a velocity vector's linear
+  // and angular halves in one exchange. per_body x blocks <= kMaxForwardPerBody.
+  virtual void forward(double *data, int per_body, int blocks, long block_stride) = 0;
+  void forward(double *data, int per_body) { forward(data, per_body, 1, 0); }
   virtual double max_all(double local) = 0;
   virtual double sum_all(double local) = 0;
   // In place, n values at once (one message instead of n).
@@ -37,7 +40,8 @@ class DistributedOps {
 
 class SerialOps : public DistributedOps {
  public:
-  void forward(double *, int) override {}
+  using DistributedOps::forward;
+  void forward(double *, int, int, long) override {}
   double max_all(double local) override { return local; }
   double sum_all(double local) override { return local; }
   void sum_all(double *, int) override {}

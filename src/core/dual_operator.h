@@ -112,8 +112,7 @@ class DualOperator {
   // Ghost copies of u from their owners (after in-place updates with apply()).
   void forward(std::vector<Vec3> &u) const
   {
-    ops_->forward(doubles(u), 3);
-    if (p_->rotates()) ops_->forward(doubles(u) + 3 * p_->n_bodies(), 3);
+    ops_->forward(doubles(u), 3, p_->rotates() ? 2 : 1, 3L * p_->n_bodies());
   }
 
   // g_c(u) = D_c + h G_c u, eq. 15: also the gradient of the dual objective at mu(u).
@@ -203,7 +202,7 @@ class DualOperator {
   double memory_usage() const { return bytes_of(deg_, arm2_); }
 
  private:
-  // u = u_free (owned bodies), then the spins.
+  // u = u_free on the owned bodies (their velocities, then their spins).
   void start_velocities(std::vector<Vec3> &u) const
   {
     const ContactProblem &p = *p_;
@@ -211,7 +210,7 @@ class DualOperator {
     u.resize(p.n_dof());
     for (int b = 0; b < p.n_owned; ++b) u[b] = p.u_free[b];
     if (p.rotates())
-      for (int b = 0; b < p.n_owned; ++b) u[nb + b] = p.w_free[b];
+      for (int b = 0; b < p.n_owned; ++b) u[nb + b] = p.u_free[nb + b];
   }
   template <int B>
   static bool nonzero(const double *m)

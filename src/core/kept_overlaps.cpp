@@ -1,7 +1,5 @@
 #include "kept_overlaps.h"
 
-#include "container_bytes.h"
-
 #include <algorithm>
 #include <limits>
 
@@ -9,20 +7,15 @@ namespace hardcontact {
 
 bool KeptOverlaps::begin_step()
 {
-  rows_.clear();
-  by_.clear();
+  raised_ = 0;
   active_ = skip_ == 0;
   if (skip_ > 0) --skip_;
   return active_;
 }
 
-void KeptOverlaps::undo(ContactProblem &p)
+void KeptOverlaps::undo()
 {
-  // the raise was added last to the paper's target (after the overlap clamp, before the
-  // wall and restitution terms, which add to it): subtracting it gives the paper's target
-  for (size_t k = 0; k < rows_.size(); ++k) p.gap[rows_[k]] -= by_[k];
-  rows_.clear();
-  by_.clear();
+  raised_ = 0;
   active_ = false;
   ++undone_;
   skip_ = backoff_;
@@ -58,7 +51,5 @@ void KeptOverlaps::load_state(const double *in)
   backoff_ = within(in[1], 1, kMaxBackoff, 1);
   cleared_iterations_ = within(in[2], -1, std::numeric_limits<int>::max(), -1);
 }
-
-double KeptOverlaps::memory_usage() const { return bytes_of(rows_, by_); }
 
 }    // namespace hardcontact

@@ -7,7 +7,7 @@
 // pile, whose forces are ill-determined (10.1), pays hundreds of iterations every step for an
 // error it made itself. A row whose warm-start force is > 0 and whose overlap is at most
 // kKeptOverlap tol size (targets.cpp, as with friction) therefore gets the target 0: it may not
-// deepen, it need not clear (Targets::apply records the raise of its target here).
+// deepen, it need not clear (Targets::apply counts the raised rows here).
 //
 // Raising targets never makes eq. 15 infeasible (the cleared targets' solution still
 // satisfies it), but in a tight redundant loop (a row of spheres from wall to wall, a crystal)
@@ -27,10 +27,7 @@
 // 19 against 195 per step) the budget is far above what a kept solve takes.
 #pragma once
 
-#include "contact_problem.h"
-
 #include <algorithm>
-#include <vector>
 
 namespace hardcontact {
 
@@ -49,12 +46,8 @@ class KeptOverlaps {
   bool begin_step();
   // Whether the rows being targeted now may keep their overlaps (this step, before undo()).
   bool active() const { return active_; }
-  // Target of row c raised by `by` (> 0) above the paper's (Targets::apply).
-  void raised(int c, double by)
-  {
-    rows_.push_back(c);
-    by_.push_back(by);
-  }
+  // A row's target raised above the paper's (Targets::apply).
+  void raised() { ++raised_; }
   int budget(int maxiter) const;
   // A step that could have kept overlaps was solved with the paper's targets from the start (a
   // back-off, or no row to keep) in `iterations` (the same on every process): what clearing
@@ -64,9 +57,11 @@ class KeptOverlaps {
   {
     cleared_iterations_ = std::max(iterations, cleared_iterations_ / 2);
   }
-  // The solve stopped at its budget: every raised row gets the paper's target again, rows
-  // targeted later this step clear, and the next steps clear (back-off, doubled each time).
-  void undo(ContactProblem &p);
+  // The solve stopped at its budget: keeping ends for this step (the caller writes every
+  // row's target again, Targets::apply from row 0: the paper's, since the gaps beside them
+  // are as measured), rows targeted later this step clear, and the next steps clear
+  // (back-off, doubled each time).
+  void undo();
   // Solves that stopped at their budget and went on with cleared targets, since the start.
   long undone() const { return undone_; }
   // What decides the coming steps (the back-off under way, its next length, the budget's
@@ -76,12 +71,10 @@ class KeptOverlaps {
   static constexpr int kStateSize = 3;
   void save_state(double *out) const;
   void load_state(const double *in);
-  int rows_raised() const { return static_cast<int>(rows_.size()); }
-  double memory_usage() const;
+  int rows_raised() const { return raised_; }
 
  private:
-  std::vector<int> rows_;
-  std::vector<double> by_;
+  int raised_ = 0;
   bool active_ = false;
   int skip_ = 0;       // steps still to clear from the start
   int backoff_ = 1;    // the next back-off's length

@@ -22,7 +22,7 @@ bool write_problem(const std::string &path, const ContactProblem &p,
   for (int c = 0; c < nc; ++c) {
     const Vec3 &n = p.normal[c];
     std::fprintf(f, "%d %d %.17g %.17g %.17g %.17g %.17g %.17g %.17g\n", p.body_i[c], p.body_j[c],
-                 n[0], n[1], n[2], p.gap[c], p.size[c], scales[c], mu_start[c]);
+                 n[0], n[1], n[2], p.target[c], p.size[c], scales[c], mu_start[c]);
   }
   return std::ferror(f) == 0;
 }

@@ -30,7 +30,7 @@ double clearing_work(const ContactProblem &p, const std::vector<double> &mu, int
   for (int c = 0; c < nc; ++c) {
     const double *m = &mu[static_cast<size_t>(block) * c];
     if (!p.counted[c] || m[0] <= 0.0) continue;
-    work += m[0] * std::max(0.0, -p.gap[c]);
+    work += m[0] * std::max(0.0, -p.target[c]);
     // A wall sliding under a sphere (tangential velocity w_t) works on it through friction:
     // its share of the affine term, -h (m_1 t_1 + m_2 t_2) . w, where that is positive.
     if (block > 1 && !p.wall_velocity.empty() && is_wall(p.body_j[c])) {
@@ -59,8 +59,9 @@ bool energy_within_bound(const ContactProblem &p, const std::vector<double> &mu,
     for (int b = 0; b < p.n_owned; ++b) {
       if (p.inv_inertia[b] <= 0.0) continue;
       const double inertia = 1.0 / p.inv_inertia[b];
-      sums[0] += 0.5 * inertia * (u[nb + b] - p.w_free[b]).dot(u[nb + b] + p.w_free[b]);
-      sums[1] += 0.5 * inertia * p.w_free[b].squaredNorm();
+      const Vec3 &w_free = p.u_free[nb + b];
+      sums[0] += 0.5 * inertia * (u[nb + b] - w_free).dot(u[nb + b] + w_free);
+      sums[1] += 0.5 * inertia * w_free.squaredNorm();
     }
   }
   const int nc = p.n_contacts();

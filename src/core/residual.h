@@ -49,8 +49,9 @@ inline double row_scale(double size, double h, double speed_scale, double tol,
 double row_scales(const ContactProblem &p, double tol, DistributedOps &ops,
                   std::vector<double> &scale);
 
-// This process's part of sum_c mu_c max(0, -D_c) over its counted rows: the work of clearing
-// overlaps present at q^n (and of walls moving towards a sphere, whose h n . u_wall is in D),
+// This process's part of sum_c mu_c max(0, -target_c) over its counted rows: the work of
+// clearing overlaps present at q^n (and of walls moving towards a sphere, whose h n . u_wall is
+// in the target),
 // plus the work of a wall sliding under a sphere through friction: the kinetic energy a step
 // may gain (energy_within_bound).
 // block: multipliers per row (the normal force first).

@@ -34,24 +34,19 @@ constexpr double kKeptOverlap = 0.1;
 // large overlaps stay as they are. The second clears what a solve stopped at tol leaves (at
 // most tol times the scale per step), so such overlaps never add up. For D >= 0, the normal
 // case, this is eq. 15 unchanged.
-//
-// Restitution: a row that was closing at the start of the step faster than bounce_vmin
-// (v = n . (u_j - u_i) at u^n, v < -vmin) and that the free motion would close within the step
-// is asked to leave with at least e |v|: D' = min(D, 0) - h e |v|, so that g >= 0 reads
-// n . (u_j - u_i)^{n+1} >= e |v| (and no overlap); against a moving wall v is relative to
-// the wall and D' gains h n . u_wall, so the rebound is relative to the wall too. Newton's law at velocity level: the rebound
-// speed is exact, the position of the impact within the step is not resolved (an error below
-// h |v| in the gap). Rows in resting contact (v ~ 0) stay inelastic. e = 0 is the paper's
-// scheme. The target is negative, so the energy test counts its work as allowed (residual.h).
 // A moving wall: its velocity over the step enters as + h n . u_wall, after the overlap clamp
 // (the wall's motion is not an overlap to limit), so that g >= 0 keeps the sphere clear of
-// where the wall will be; the work the wall does is allowed in the same way (negative target).
+// where the wall will be; the work the wall does is allowed as a negative target (residual.h).
+// The measured gap D stays as it is: the targets are written beside it, so they can be written
+// again from it (KeptOverlaps::undo) and an effect's term can read both (restitution.h).
 void Targets::apply(ContactProblem &p, int first_row) const
 {
   const int nc = p.n_contacts();
   const double h = p.h;
+  p.target.resize(nc);
   for (int c = first_row; c < nc; ++c) {
     const double d = p.gap[c];
+    double target = d;
     if (d < 0.0) {
       // the row scale without its round-off floor: at rest with no force nothing may move
       const double s = std::min(p.size[c], h * speed_scale);
@@ -60,34 +55,21 @@ void Targets::apply(ContactProblem &p, int first_row) const
       const double shallow = tol * std::min(kKeptOverlap * p.size[c], p.size[c] - s);
       // a frictional row keeps that much of any overlap
       const bool frictional = !p.friction.empty() && p.friction[c] > 0.0;
-      p.gap[c] = std::max(std::min(0.0, d + (frictional ? shallow : 0.0)),
-                          -(h * recovery_speed + 2.0 * tol * s));
+      target = std::max(std::min(0.0, d + (frictional ? shallow : 0.0)),
+                        -(h * recovery_speed + 2.0 * tol * s));
       // a frictionless row that pushed keeps all of a shallow overlap: the paper's target is
-      // raised to 0, and the raise recorded, so that KeptOverlaps::undo can lower it again
+      // raised to 0 (KeptOverlaps::undo has them written again with the paper's)
       if (!frictional && -d <= shallow && pushed(c)) {
-        kept_overlaps->raised(c, -p.gap[c]);
-        p.gap[c] = 0.0;
+        kept_overlaps->raised();
+        target = 0.0;
       }
     }
     // a moving wall: g = D + h n . (u_wall - u_i), the gap to where the wall will be
-    const int j = p.body_j[c];
-    const double wall_speed = !p.wall_velocity.empty() && is_wall(j)
-                                  ? p.normal[c].dot(p.wall_velocity[c])
-                                  : 0.0;    // n . u_wall
-    const double geometric = p.gap[c];      // D after the overlap clamp
-    if (wall_speed != 0.0) p.gap[c] += h * wall_speed;
-    if (u_start == nullptr) continue;
-    const double e = (*restitution)[c];
-    if (e <= 0.0) continue;
-    const double v = p.normal_speed(c, *u_start) + wall_speed;
-    const double v_free = p.normal_speed(c, p.u_free) + wall_speed;
-    if (v >= -bounce_vmin || d + h * v_free >= 0.0) continue;
-    // leave the wall (or partner) at e |v| relative to it: n . (u_wall - u_i) >= e |v|, and
-    // no overlap
-    p.gap[c] = std::min(geometric, 0.0) + h * wall_speed + h * e * v;
+    const double wall_speed = wall_normal_speed(p, c);
+    if (wall_speed != 0.0) target += h * wall_speed;
+    p.target[c] = target;
   }
 }
-
 bool Targets::pushed(int c) const
 {
   if (kept_overlaps == nullptr || !kept_overlaps->active() || warm == nullptr) return false;

@@ -16,7 +16,7 @@ void WorkingSet<Law>::init(const ContactProblem &p, const std::vector<double> &m
   for (int c = 0; c < nc; ++c) {
     const int j = p.body_j[c];
     const Vec3 du = (is_wall(j) ? Vec3::Zero() : p.u_free[j]) - p.u_free[p.body_i[c]];
-    if (mu[static_cast<size_t>(Law::block) * c] > 0.0 || p.gap[c] <= p.h * du.norm()) {
+    if (mu[static_cast<size_t>(Law::block) * c] > 0.0 || p.target[c] <= p.h * du.norm()) {
       rows_.push_back(c);
       member_[c] = 1;
     }

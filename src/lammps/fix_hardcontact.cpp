@@ -128,6 +128,18 @@ FixHardContact::FixHardContact(LAMMPS *lmp, int narg, char **arg) :
   add_wall_source(&meshes_);
   walls_.check_in_box();
   integrate_.set_inertia(options_.disc ? 0.5 : 0.4);
+  // the law's coefficients, and the effects the keywords asked for (effects/effect.h)
+  hardcontact::StepLaw law;
+  law.law = law_;
+  if (options_.has_friction()) {
+    law.friction = &options_.friction;
+    law.wall_friction = &wall_friction_;
+    for (int r = 0; r < hardcontact::kResistances; ++r)
+      if (options_.has_resistance(r)) law.resistance[r] = &options_.resistance[r];
+    law.inertia = options_.disc ? 0.5 : 0.4;
+  }
+  step_.set_law(law);
+  for (const auto &part : options_.effects) step_.add_effect(part.effect.get());
 
   time_integrate = 1;
   // the contact forces in pressure and stress, as LAMMPS's constraint fixes do (fix_modify
@@ -208,7 +220,8 @@ void FixHardContact::init()
         "Fix hardcontact solver {} runs on one processor only (it assembles "
         "the whole contact operator): use apgd, pgs or uzawa with mpirun",
         options_.solver_name);
-  deck_checks_.check(lmp, *this, !options_.restitution.empty());
+  for (const auto &part : options_.effects) part.effect->init(lmp);
+  deck_checks_.check(lmp, *this, options_.has_effect("restitution"));
 }
 
 void FixHardContact::add_wall_source(hardcontact::WallSource *source)
@@ -253,24 +266,12 @@ void FixHardContact::setup(int vflag)
 void FixHardContact::initial_integrate(int vflag)
 {
   start_virial(vflag);
-  hardcontact::StepEffects effects;
-  effects.restitution = &options_.restitution;
-  effects.bounce_vmin = options_.bounce_vmin;
   obstacles_.advance(update->dt);    // moving walls to t^{n+1}, with their velocities
-  effects.moving_obstacles = obstacles_.moving();
-  effects.cohesion = &options_.cohesion;
-  effects.law = law_;
-  if (options_.has_friction()) {
-    effects.friction = &options_.friction;
-    if (!wall_friction_.empty()) effects.wall_friction = &wall_friction_;
-    for (int r = 0; r < hardcontact::kResistances; ++r)
-      if (options_.has_resistance(r)) effects.resistance[r] = &options_.resistance[r];
-    effects.inertia = options_.disc ? 0.5 : 0.4;
-  }
+  const bool moving = obstacles_.moving();
   const hardcontact::StepResult result =
       dump_prefix_.empty() ? step_.solve(*solver_, options_.settings,
-                                         options_.warmstart ? &history_ : nullptr, effects)
-                           : solve_and_dump(effects);
+                                         options_.warmstart ? &history_ : nullptr, moving)
+                           : solve_and_dump(moving);
   obstacles_.commit(update->dt);    // the outputs measure q^{n+1} against the walls at t^{n+1}
   if (options_.warmstart) history_resized();
   outputs_.record_step(result, step_.problem(), step_.mu(), law_, step_.u(),
@@ -309,13 +310,14 @@ void FixHardContact::post_force(int)
 
 // The step with the developers' dump of its problem (core/problem_dump.h): prefix.<step>, and
 // .<rank> after it when several processes run (each writes its own rows and bodies).
-hardcontact::StepResult FixHardContact::solve_and_dump(const hardcontact::StepEffects &effects)
+hardcontact::StepResult FixHardContact::solve_and_dump(bool moving_obstacles)
 {
   hardcontact::SolverSettings settings = options_.settings;
   settings.dump_problem = dump_prefix_ + "." + std::to_string(update->ntimestep);
   if (comm->nprocs > 1) settings.dump_problem += "." + std::to_string(comm->me);
   const hardcontact::StepResult result =
-      step_.solve(*solver_, settings, options_.warmstart ? &history_ : nullptr, effects);
+      step_.solve(*solver_, settings, options_.warmstart ? &history_ : nullptr,
+                  moving_obstacles);
   if (result.report.dump_failed)
     hardcontact::compat::error_one(lmp->error, FLERR,
                                    "Fix hardcontact cannot write {} (HARDCONTACT_DUMP_PROBLEMS): "
@@ -499,18 +501,22 @@ int FixHardContact::maxsize_restart()
 int FixHardContact::pack_forward_comm(int n, int *list, double *buf, int, int *)
 {
   const double *data = ops_.data();
-  const int per = ops_.per_body();
+  const int per = ops_.per_body(), blocks = ops_.blocks();
+  const long stride = ops_.block_stride();
   int m = 0;
   for (int a = 0; a < n; ++a)
-    for (int k = 0; k < per; ++k) buf[m++] = data[per * list[a] + k];
+    for (int b = 0; b < blocks; ++b)
+      for (int k = 0; k < per; ++k) buf[m++] = data[b * stride + per * list[a] + k];
   return m;
 }
 
 void FixHardContact::unpack_forward_comm(int n, int first, double *buf)
 {
   double *data = ops_.data();
-  const int per = ops_.per_body();
+  const int per = ops_.per_body(), blocks = ops_.blocks();
+  const long stride = ops_.block_stride();
   int m = 0;
   for (int a = first; a < first + n; ++a)
-    for (int k = 0; k < per; ++k) data[per * a + k] = buf[m++];
+    for (int b = 0; b < blocks; ++b)
+      for (int k = 0; k < per; ++k) data[b * stride + per * a + k] = buf[m++];
 }

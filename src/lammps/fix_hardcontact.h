@@ -62,7 +62,7 @@ class FixHardContact : public Fix {
   // stencil with it (src/liggghts/fix_hardcontact_liggghts.h)
   double reach_cutoff() const { return reach_.cutoff(); }
   // values per atom of the forward communication in progress (LIGGGHTS's pack_comm returns it)
-  int forward_values_per_atom() const { return ops_.per_body(); }
+  int forward_values_per_atom() const { return ops_.values_per_atom(); }
   // Appends a source of walls (a host's own obstacles) to the list after the planes, regions
   // and meshes of the keywords: its walls take the next wall codes at each init, its rows
   // are offered every pass, its hooks are called every step (sources/contact_source.h).
@@ -105,7 +105,7 @@ class FixHardContact : public Fix {
   // LAMMPS's v_init on every host: the virial is computed on this step (vflag_global,
   // vflag_atom) only if a compute asked for it and fix_modify virial is on
   void start_virial(int vflag);
-  hardcontact::StepResult solve_and_dump(const hardcontact::StepEffects &effects);
+  hardcontact::StepResult solve_and_dump(bool moving_obstacles);
 };
 
 }    // namespace LAMMPS_NS

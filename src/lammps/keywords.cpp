@@ -1,6 +1,7 @@
 #include "keywords.h"
 
 #include "lammps_compat.h"
+#include "effects/effect.h"
 
 #include "atom.h"
 #include "comm.h"
@@ -30,13 +31,18 @@ struct Keyword {
   const char *name;
   int nvalues;
   int optional;    // values that may follow (e.g. type ranges I J), all or none
-  Parser parse;
+  Parser parse;    // null for an effect's keyword:
   const char *doc;
+  // an effect's keyword (effects/effect.h): its kind's index in effect_kinds(), and the row
+  const EffectKeyword *effect_row = nullptr;
+  int effect = -1;
 };
 
 bool is_keyword(const char *word);
 
-double number(LAMMPS *lmp, const char *keyword, const char *word)
+}    // namespace
+
+double keyword_number(LAMMPS *lmp, const char *keyword, const char *word)
 {
   if (!utils::is_double(word))
     compat::error_all(lmp->error, FLERR, "Fix hardcontact {}: expected a number, got '{}'", keyword,
@@ -48,6 +54,37 @@ double number(LAMMPS *lmp, const char *keyword, const char *word)
                       keyword, word);
   return utils::numeric(FLERR, word, false, lmp);
 }
+
+// A value per type pair (I, J LAMMPS type ranges, default every pair; later lines win) into a
+// (ntypes + 1)^2 table.
+static void set_pair_values(LAMMPS *lmp, char **values, int n, double value, std::vector<double> &table)
+{
+  const int ntypes = lmp->atom->ntypes;
+  int ilo = 1, ihi = ntypes, jlo = 1, jhi = ntypes;
+  if (n == 3) {
+    utils::bounds(FLERR, values[1], 1, ntypes, ilo, ihi, lmp->error);
+    utils::bounds(FLERR, values[2], 1, ntypes, jlo, jhi, lmp->error);
+  }
+  table.resize((ntypes + 1) * (ntypes + 1), 0.0);
+  for (int i = ilo; i <= ihi; ++i)
+    for (int j = jlo; j <= jhi; ++j) {
+      table[i * (ntypes + 1) + j] = value;
+      table[j * (ntypes + 1) + i] = value;
+    }
+}
+
+// One coefficient per type pair, in [lo, hi]; else "Fix hardcontact NAME must be WHAT, got V".
+void parse_pair_coefficient(LAMMPS *lmp, const char *name, const char *what, double lo,
+                            double hi, char **values, int n, std::vector<double> &table)
+{
+  const double v = keyword_number(lmp, name, values[0]);
+  if (v < lo || v > hi)
+    compat::error_all(lmp->error, FLERR, "Fix hardcontact {} must be {}, got {}", name, what,
+                      values[0]);
+  set_pair_values(lmp, values, n, v, table);
+}
+
+namespace {
 
 std::string joined(const std::vector<std::string> &names)
 {
@@ -66,7 +103,7 @@ void parse_solver(LAMMPS *lmp, char **values, int, FixOptions &o)
 
 void parse_tol(LAMMPS *lmp, char **values, int, FixOptions &o)
 {
-  o.settings.tol = number(lmp, "tol", values[0]);
+  o.settings.tol = keyword_number(lmp, "tol", values[0]);
   o.tol_given = true;
   if (o.settings.tol <= 0.0 || o.settings.tol >= 1.0)
     compat::error_all(lmp->error, FLERR,
@@ -107,7 +144,7 @@ void parse_subspace(LAMMPS *lmp, char **values, int, FixOptions &o)
 
 void parse_rho(LAMMPS *lmp, char **values, int, FixOptions &o)
 {
-  o.settings.rho = number(lmp, "rho", values[0]);
+  o.settings.rho = keyword_number(lmp, "rho", values[0]);
   if (o.settings.rho <= 0.0)
     compat::error_all(lmp->error, FLERR,
                       "Fix hardcontact rho must be positive (omit it for the automatic "
@@ -196,8 +233,8 @@ void parse_wall(LAMMPS *lmp, char **values, int n, FixOptions &o)
   const std::string var_lo = has_lo ? variable(values[1]) : "";
   const std::string var_hi = has_hi ? variable(values[2]) : "";
   double lo = 0.0, hi = 0.0;
-  if (has_lo && var_lo.empty()) lo = number(lmp, "wall lo", values[1]);
-  if (has_hi && var_hi.empty()) hi = number(lmp, "wall hi", values[2]);
+  if (has_lo && var_lo.empty()) lo = keyword_number(lmp, "wall lo", values[1]);
+  if (has_hi && var_hi.empty()) hi = keyword_number(lmp, "wall hi", values[2]);
   if (has_lo && has_hi && var_lo.empty() && var_hi.empty() && lo >= hi)
     compat::error_all(lmp->error, FLERR, "Fix hardcontact wall {}: lo ({}) must be below hi ({})",
                       plane, lo, hi);
@@ -221,7 +258,7 @@ int parse_wall_friction(LAMMPS *lmp, char **arg, int narg, int iarg, size_t plan
   if (iarg + 1 >= narg)
     lmp->error->all(FLERR, "Fix hardcontact wall ... friction needs a value (the wall's own "
                            "Coulomb coefficient)");
-  const double mu = number(lmp, "wall friction", arg[iarg + 1]);
+  const double mu = keyword_number(lmp, "wall friction", arg[iarg + 1]);
   if (mu < 0.0)
     compat::error_all(lmp->error, FLERR,
                       "Fix hardcontact wall friction must be a Coulomb coefficient >= 0, got {}",
@@ -280,8 +317,8 @@ int parse_wall_rotate(LAMMPS *lmp, char **arg, int narg, int iarg, FixOptions &o
                       w);
   FixOptions::MeshWall &m = o.wall_meshes.back();
   m.theta = w + 2;
-  for (int d = 0; d < 3; ++d) m.point[d] = number(lmp, "wall stl rotate P", arg[iarg + 2 + d]);
-  for (int d = 0; d < 3; ++d) m.axis[d] = number(lmp, "wall stl rotate A", arg[iarg + 5 + d]);
+  for (int d = 0; d < 3; ++d) m.point[d] = keyword_number(lmp, "wall stl rotate P", arg[iarg + 2 + d]);
+  for (int d = 0; d < 3; ++d) m.axis[d] = keyword_number(lmp, "wall stl rotate A", arg[iarg + 5 + d]);
   if (m.axis[0] == 0.0 && m.axis[1] == 0.0 && m.axis[2] == 0.0)
     lmp->error->all(FLERR, "Fix hardcontact wall stl ... rotate: the axis direction is zero");
   return 8;
@@ -294,7 +331,7 @@ int parse_wall_scale(LAMMPS *lmp, char **arg, int narg, int iarg, FixOptions &o)
   if (iarg + 1 >= narg)
     lmp->error->all(FLERR, "Fix hardcontact wall stl ... scale needs a value (the factor on the "
                            "file's lengths)");
-  const double s = number(lmp, "wall stl scale", arg[iarg + 1]);
+  const double s = keyword_number(lmp, "wall stl scale", arg[iarg + 1]);
   if (!(s > 0.0))
     compat::error_all(lmp->error, FLERR,
                       "Fix hardcontact wall stl scale must be a positive factor, got {}",
@@ -303,50 +340,7 @@ int parse_wall_scale(LAMMPS *lmp, char **arg, int narg, int iarg, FixOptions &o)
   return 2;
 }
 
-// A value per type pair (I, J LAMMPS type ranges, default every pair; later lines win) into a
-// (ntypes + 1)^2 table.
-void set_pair_values(LAMMPS *lmp, char **values, int n, double value, std::vector<double> &table)
-{
-  const int ntypes = lmp->atom->ntypes;
-  int ilo = 1, ihi = ntypes, jlo = 1, jhi = ntypes;
-  if (n == 3) {
-    utils::bounds(FLERR, values[1], 1, ntypes, ilo, ihi, lmp->error);
-    utils::bounds(FLERR, values[2], 1, ntypes, jlo, jhi, lmp->error);
-  }
-  table.resize((ntypes + 1) * (ntypes + 1), 0.0);
-  for (int i = ilo; i <= ihi; ++i)
-    for (int j = jlo; j <= jhi; ++j) {
-      table[i * (ntypes + 1) + j] = value;
-      table[j * (ntypes + 1) + i] = value;
-    }
-}
-
-// One coefficient per type pair, in [lo, hi]; else "Fix hardcontact NAME must be WHAT, got V".
-void parse_pair_coefficient(LAMMPS *lmp, const char *name, const char *what, double lo,
-                            double hi, char **values, int n, std::vector<double> &table)
-{
-  const double v = number(lmp, name, values[0]);
-  if (v < lo || v > hi)
-    compat::error_all(lmp->error, FLERR, "Fix hardcontact {} must be {}, got {}", name, what,
-                      values[0]);
-  set_pair_values(lmp, values, n, v, table);
-}
-
 const double kUnbounded = std::numeric_limits<double>::infinity();
-
-void parse_restitution(LAMMPS *lmp, char **values, int n, FixOptions &o)
-{
-  parse_pair_coefficient(lmp, "restitution",
-                         "in [0, 1] (0: inelastic, the paper's scheme; 1: elastic)", 0.0, 1.0,
-                         values, n, o.restitution);
-}
-
-void parse_cohesion(LAMMPS *lmp, char **values, int n, FixOptions &o)
-{
-  parse_pair_coefficient(lmp, "cohesion",
-                         "a force >= 0 (the pull a touching contact holds before it opens)",
-                         0.0, kUnbounded, values, n, o.cohesion);
-}
 
 void parse_friction(LAMMPS *lmp, char **values, int n, FixOptions &o)
 {
@@ -372,17 +366,7 @@ void parse_disc(LAMMPS *lmp, char **, int, FixOptions &o)
   o.disc = true;
 }
 
-void parse_bounce(LAMMPS *lmp, char **values, int, FixOptions &o)
-{
-  o.bounce_vmin = number(lmp, "bounce", values[0]);
-  if (o.bounce_vmin < 0.0)
-    compat::error_all(lmp->error, FLERR,
-                      "Fix hardcontact bounce must be a speed >= 0 (contacts closing "
-                      "slower stay inelastic), got {}",
-                      values[0]);
-}
-
-const Keyword keywords[] = {
+const Keyword before_effects[] = {
     {"solver", 1, 0, parse_solver, "solver name: cg (default without friction), hybrid (default with friction), apgd, nsgs, pgs, uzawa or exact"},
     {"tol", 1, 0, parse_tol, "tol value: row tolerance relative to the row scale, in (0, 1)"},
     {"maxiter", 1, 0, parse_maxiter, "maxiter N: at most N solver iterations per solve"},
@@ -398,12 +382,9 @@ const Keyword keywords[] = {
      "its lengths times s, moved as region ... move/rotate; wall mesh ID: LIGGGHTS's fix "
      "mesh/surface ID (moved by its fix move/mesh); each followed by 'friction mu': the "
      "wall's own Coulomb coefficient"},
-    {"restitution", 1, 2, parse_restitution,
-     "restitution e [I J]: Newton's restitution e in [0, 1] for type pairs I J (all: default)"},
-    {"bounce", 1, 0, parse_bounce, "bounce vmin: contacts closing slower stay inelastic"},
-    {"cohesion", 1, 2, parse_cohesion,
-     "cohesion F [I J]: a touching contact holds up to F of pull, for type pairs I J (all: "
-     "default)"},
+};
+// then each effect's keywords (restitution, bounce, cohesion, ...: effects/effect_kinds.cpp)
+const Keyword after_effects[] = {
     {"friction", 1, 2, parse_friction,
      "friction mu [I J]: Coulomb friction coefficient >= 0 for type pairs I J (all: default); "
      "walls use the value of the atom's type with itself"},
@@ -417,9 +398,24 @@ const Keyword keywords[] = {
     {"disc", 0, 0, parse_disc, "disc: 2d discs, moment of inertia 1/2 m r^2"},
 };
 
+// The fix's keywords, in the order of the doc: the rows above with the effects' between them.
+const std::vector<Keyword> &keywords()
+{
+  static const std::vector<Keyword> table = [] {
+    std::vector<Keyword> t(std::begin(before_effects), std::end(before_effects));
+    const std::vector<EffectKind> &kinds = effect_kinds();
+    for (size_t e = 0; e < kinds.size(); ++e)
+      for (const EffectKeyword &k : kinds[e].keywords)
+        t.push_back({k.name, k.nvalues, k.optional, nullptr, k.doc, &k, static_cast<int>(e)});
+    t.insert(t.end(), std::begin(after_effects), std::end(after_effects));
+    return t;
+  }();
+  return table;
+}
+
 bool is_keyword(const char *word)
 {
-  for (const Keyword &k : keywords)
+  for (const Keyword &k : keywords())
     if (strcmp(word, k.name) == 0) return true;
   return false;
 }
@@ -428,9 +424,9 @@ bool is_keyword(const char *word)
 std::string keyword_list()
 {
   std::string s;
-  const int n = static_cast<int>(sizeof(keywords) / sizeof(keywords[0]));
+  const int n = static_cast<int>(keywords().size());
   for (int k = 0; k < n; ++k)
-    s += (k == 0 ? "" : k + 1 < n ? ", " : " or ") + std::string(keywords[k].name);
+    s += (k == 0 ? "" : k + 1 < n ? ", " : " or ") + std::string(keywords()[k].name);
   return s;
 }
 
@@ -440,10 +436,11 @@ FixOptions parse_keywords(LAMMPS *lmp, int narg, char **arg, int first)
 {
   FixOptions options;
   bool pair_friction = false;    // a 'friction' keyword of its own (not a wall's)
+  std::vector<std::unique_ptr<Effect>> made(effect_kinds().size());    // by kind
   int iarg = first;
   while (iarg < narg) {
     const Keyword *found = nullptr;
-    for (const Keyword &k : keywords)
+    for (const Keyword &k : keywords())
       if (strcmp(arg[iarg], k.name) == 0) found = &k;
     if (!found)
       compat::error_all(lmp->error, FLERR, "Fix hardcontact keyword '{}' is unknown: use {}",
@@ -474,7 +471,13 @@ FixOptions parse_keywords(LAMMPS *lmp, int narg, char **arg, int first)
     const size_t planes_before = options.plane_friction.size();
     const size_t kinds_before = options.kind_walls.size();
     const size_t meshes_before = options.mesh_friction.size();
-    found->parse(lmp, arg + iarg + 1, n, options);
+    if (found->effect_row) {    // the effect's object, made at its first keyword
+      std::unique_ptr<Effect> &effect = made[found->effect];
+      if (!effect) effect = effect_kinds()[found->effect].create(lmp);
+      found->effect_row->parse(lmp, arg + iarg + 1, n, *effect);
+    } else {
+      found->parse(lmp, arg + iarg + 1, n, options);
+    }
     iarg += 1 + n;
     if (found->parse == parse_wall) {
       bool scaled = false, rubbed = false, moved = false, turned = false;    // each at most once
@@ -500,6 +503,11 @@ FixOptions parse_keywords(LAMMPS *lmp, int narg, char **arg, int first)
       pair_friction = true;
     }
   }
+  // the effects asked for, in the table's order; an effect whose keywords ask for nothing
+  // (bounce without restitution) is dropped
+  for (size_t e = 0; e < made.size(); ++e)
+    if (made[e] && made[e]->present())
+      options.effects.push_back({&effect_kinds()[e], std::move(made[e])});
   // A deck written before walls had their own coefficient ('wall zplane 0 NULL friction 0.5')
   // meant friction everywhere: say what it means now.
   if (options.has_wall_friction() && !pair_friction && lmp->comm->me == 0)

@@ -1,8 +1,10 @@
 // The keywords of `fix ID group hardcontact keyword values ...`, read in one place from one
 // table (keywords.cpp): each row is a name, its number of values, its parser and its doc line.
-// A new keyword is a row there, a field here, and a paragraph in doc/fix_hardcontact.md.
+// A new keyword is a row there, a field here, and a paragraph in doc/fix_hardcontact.md; an
+// effect's keywords are rows of its own (effects/effect.h) and fill its object instead.
 #pragma once
 
+#include "effects/effect.h"
 #include "sources/wall_kinds.h"
 
 #include "../core/plane_wall.h"
@@ -60,11 +62,19 @@ struct FixOptions {
   std::vector<double> plane_friction;
   std::vector<double> mesh_friction;    // per mesh wall (as wall_meshes)
   bool warmstart = true;
-  // restitution e per type pair, (ntypes + 1)^2 row-major; empty: inelastic (the paper)
-  std::vector<double> restitution;
-  double bounce_vmin = 0.0;
-  // cohesion F per type pair, (ntypes + 1)^2 row-major; empty: none
-  std::vector<double> cohesion;
+  // the effects the keywords ask for (restitution, cohesion, ...: effects/effect.h), in the
+  // order of the effects' table, each present; none asked for: empty (the paper's scheme)
+  struct EffectPart {
+    const EffectKind *kind;
+    std::unique_ptr<Effect> effect;
+  };
+  std::vector<EffectPart> effects;
+  bool has_effect(const char *name) const
+  {
+    for (const EffectPart &e : effects)
+      if (std::string(e.kind->name) == name) return true;
+    return false;
+  }
   // Coulomb coefficient per type pair, (ntypes + 1)^2 row-major; empty or all 0: frictionless
   // (the normal law alone, as if the keyword were absent)
   std::vector<double> friction;
@@ -123,5 +133,14 @@ struct FixOptions {
 
 // Parses arg[first..narg-1]; stops with an error that names the keyword and what to write.
 FixOptions parse_keywords(LAMMPS_NS::LAMMPS *lmp, int narg, char **arg, int first);
+
+// For the keywords' parsers (and the effects'): the number `word` given to `keyword`, or an
+// error naming both; and one coefficient per type pair (values: v [I J], LAMMPS type ranges,
+// all pairs by default, later keywords win), in [lo, hi], into a (ntypes + 1)^2 table, else
+// "Fix hardcontact NAME must be WHAT, got V".
+double keyword_number(LAMMPS_NS::LAMMPS *lmp, const char *keyword, const char *word);
+void parse_pair_coefficient(LAMMPS_NS::LAMMPS *lmp, const char *name, const char *what,
+                            double lo, double hi, char **values, int n,
+                            std::vector<double> &table);
 
 }    // namespace hardcontact

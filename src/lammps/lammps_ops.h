@@ -21,8 +21,9 @@ constexpr int kDoublesPerVec3 = static_cast<int>(sizeof(Vec3) / sizeof(double));
 
 class LammpsOps : public DistributedOps {
  public:
-  // The widest value forwarded per body: the core's (u in the solvers, degrees) and the
-  // step's own (u_free and the owners' coordinates, one Vec3 each). Sizes comm_forward.
+  // The widest value forwarded per body: the core's (u in the solvers: a velocity and a spin;
+  // degrees) and the step's own (u_free likewise, the owners' coordinates). Sizes
+  // comm_forward.
   static constexpr int kMaxPerBody =
       kMaxForwardPerBody > kDoublesPerVec3 ? kMaxForwardPerBody : kDoublesPerVec3;
 
@@ -34,15 +35,18 @@ class LammpsOps : public DistributedOps {
     comm_ = comm;
     world_ = world;
   }
-  void forward(double *data, int per_body) override
+  using DistributedOps::forward;
+  void forward(double *data, int per_body, int blocks, long block_stride) override
   {
     // LAMMPS sized its buffers for comm_forward = kMaxPerBody doubles per atom
-    if (per_body > kMaxPerBody)
+    if (per_body * blocks > kMaxPerBody)
       compat::error_one(error_, FLERR,
                         "Fix hardcontact: forward of {} values per atom exceeds comm_forward {}",
-                        per_body, kMaxPerBody);
+                        per_body * blocks, kMaxPerBody);
     data_ = data;
     per_body_ = per_body;
+    blocks_ = blocks;
+    block_stride_ = block_stride;
     const double t0 = MPI_Wtime();
     compat::forward_comm(comm_, fix_);
     times_.forward_s += MPI_Wtime() - t0;
@@ -74,9 +78,14 @@ class LammpsOps : public DistributedOps {
     std::copy(buffer + 1, buffer + 1 + n, values);
   }
 
-  // Read by the fix's pack/unpack_forward_comm: what is being sent, per LAMMPS atom index.
+  // Read by the fix's pack/unpack_forward_comm: what is being sent, per LAMMPS atom index
+  // (per_body() doubles of each of blocks() arrays, block_stride() doubles apart), and in all
+  // per atom (values_per_atom()).
   double *data() const { return data_; }
   int per_body() const { return per_body_; }
+  int blocks() const { return blocks_; }
+  long block_stride() const { return block_stride_; }
+  int values_per_atom() const { return per_body_ * blocks_; }
 
   // Calls and seconds since the last take_times(), on this process.
   struct Times {
@@ -129,6 +138,8 @@ class LammpsOps : public DistributedOps {
   MPI_Comm world_ = MPI_COMM_NULL;
   double *data_ = nullptr;
   int per_body_ = 0;
+  int blocks_ = 1;
+  long block_stride_ = 0;
   Times times_;
 };
 

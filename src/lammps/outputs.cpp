@@ -145,12 +145,6 @@ void Outputs::per_atom_and_local(const ContactProblem &p, const std::vector<doub
   // h sum_c mu_c . G_c (u_free + u^{n+1}) / 2: the tangential terms, -h F_t . (mean slip),
   // are what friction dissipates (>= 0: Coulomb's force opposes the slip).
   counts[0] = counts[1] = counts[2] = 0.0;
-  if (block > 1) {
-    const int nb = p.n_bodies();
-    u_free_.resize(2 * static_cast<size_t>(nb));
-    std::copy(p.u_free.begin(), p.u_free.end(), u_free_.begin());
-    std::copy(p.w_free.begin(), p.w_free.end(), u_free_.begin() + nb);
-  }
   int nrows = 0;
   with_law(law, [&](auto rows_law) {    // the law's type once, not per row
     using Law = decltype(rows_law);
@@ -166,7 +160,7 @@ void Outputs::per_atom_and_local(const ContactProblem &p, const std::vector<doub
       if (listed(j)) ++nrows;
       // each disc's work: -h m_q . (its mean rate), laws/disc_rows.h
       if constexpr (Law::block > 1)
-        Law::subtract_work(p, c, &mu[static_cast<size_t>(block) * c], u, u_free_, counts[2]);
+        Law::subtract_work(p, c, &mu[static_cast<size_t>(block) * c], u, p.u_free, counts[2]);
     }
   });
 

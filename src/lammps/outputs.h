@@ -82,7 +82,6 @@ class Outputs : protected LAMMPS_NS::Pointers {
   LAMMPS_NS::bigint kept_undone_ = 0;    // solves whose kept overlaps were cleared again
   std::vector<Vec3> force_;     // contact force per owned atom
   std::vector<Vec3> torque_;    // contact torque per owned atom (friction)
-  std::vector<Vec3> u_free_;    // u_free then w_free (friction): the dissipation's mean slip
   int nlocal_rows_max_ = 0;
   LocalRows local_rows_ = LocalRows::ALL;
   bool listed(int j) const

@@ -8,7 +8,6 @@
 #include "sources/row_sink.h"
 #include "lammps_ops.h"
 #include "lammps_compat.h"
-#include "../core/cohesion.h"
 #include "../core/targets.h"
 
 #include "../core/residual.h"
@@ -37,13 +36,12 @@ ContactStep::ContactStep(LAMMPS *lmp, int groupbit, DistributedOps &ops,
 }
 
 StepResult ContactStep::solve(Solver &solver, const SolverSettings &settings,
-                              ContactHistory *history, const StepEffects &effects)
+                              ContactHistory *history, bool moving_obstacles)
 {
-  const bool restitution = effects.restitution && !effects.restitution->empty();
-  block_ = law_block(effects.law);
-  const Bodies bodies = build_bodies(solver.traits().needs_owner_map, effects);
+  block_ = law_block(law_.law);
+  const Bodies bodies = build_bodies(solver.traits().needs_owner_map, law_.friction != nullptr);
   RowSink sink(problem_, atom->tag, atom->nlocal, free_speed_);
-  sink.set_moving(effects.moving_obstacles);
+  sink.set_moving(moving_obstacles);
   sink.begin_candidates(1.0);
   offer_rows(bodies, sink);
   const double speed_scale = free_speed_scale(problem_, ops_);    // V (core/residual.h)
@@ -59,37 +57,29 @@ StepResult ContactStep::solve(Solver &solver, const SolverSettings &settings,
     targets.warm = &mu_;
     targets.block = block_;
   }
-  // Cohesion: touching rows (D <= tol size) pull with their F, applied to u_free before the
-  // solve (core/cohesion.h); rows added by later rounds are not touching.
-  pull_any_ = effects.cohesion && !effects.cohesion->empty();
-  if (pull_any_) {
-    pair_values_of_rows(*effects.cohesion, 0, row_f_);
-    apply_cohesion(problem_, row_f_, settings.tol, ops_, pull_);
-  }
-  // The first round's solves take this V: the same rows and u_free, one reduction fewer.
-  // Cohesion has moved u_free since (its solver finds V again), as a later round's new rows
-  // may (prepare_rows).
-  problem_.speed_scale = pull_any_ ? -1.0 : speed_scale;
-  if (restitution) {
-    // the approach speeds at the start of the step: u^n, ghosts from their owners
-    const int nlocal = atom->nlocal;
-    u_start_.resize(nlocal + atom->nghost);
-    for (int i = 0; i < nlocal; ++i) u_start_[i] = Vec3(atom->v[i]);
-    ops_.forward(doubles(u_start_), kDoublesPerVec3);
-    targets.u_start = &u_start_;
-    targets.restitution = &row_e_;
-    targets.bounce_vmin = effects.bounce_vmin;
-  }
+  // The effects' terms on u_free (cohesion: core/cohesion.h), before any row is targeted.
+  // The first round's solves take this V (the same rows and u_free, one reduction fewer)
+  // unless an effect moved u_free since; a later round's new rows may too (below).
+  EffectStep effect_step{lmp, problem_, ops_, settings.tol};
+  bool moved_free = false;
+  for (Effect *e : effects_) moved_free = e->begin_step(effect_step) || moved_free;
+  problem_.speed_scale = moved_free ? -1.0 : speed_scale;
+  // the targets of rows first..: the common terms, then each effect's
+  auto target_rows = [&](int first) {
+    targets.apply(problem_, first);
+    for (Effect *e : effects_) e->target_rows(effect_step, first);
+  };
   int targeted = 0;    // rows before it have their targets (and friction, its frames)
   auto prepare_rows = [&]() {
-    if (restitution) pair_values_of_rows(*effects.restitution, targeted, row_e_);
-    if (effects.friction) {
-      pair_values_of_rows(*effects.friction, targeted, problem_.friction);
-      if (effects.wall_friction)
-        wall_values_of_rows(*effects.wall_friction, targeted, problem_.friction);
+    if (law_.friction) {
+      pair_values_of_rows(problem_, atom->type, atom->ntypes, *law_.friction, targeted,
+                          problem_.friction);
+      if (law_.wall_friction && !law_.wall_friction->empty())
+        wall_values_of_rows(*law_.wall_friction, targeted, problem_.friction);
       for (int r = 0; r < kResistances; ++r)
-        if (effects.resistance[r])
-          pair_values_of_rows(*effects.resistance[r], targeted, problem_.resistance[r]);
+        if (law_.resistance[r])
+          pair_values_of_rows(problem_, atom->type, atom->ntypes, *law_.resistance[r], targeted,
+                              problem_.resistance[r]);
       problem_.complete_frames(targeted);
     }
     // Warm start: each row starts from the multiplier its pair had at the last step, if any
@@ -99,7 +89,7 @@ StepResult ContactStep::solve(Solver &solver, const SolverSettings &settings,
       if (history) history->load(problem_, atom->tag, mu_);
       else mu_.assign(static_cast<size_t>(block_) * problem_.n_contacts(), 0.0);
     }
-    targets.apply(problem_, targeted);
+    target_rows(targeted);
     targeted = problem_.n_contacts();
   };
   prepare_rows();
@@ -122,7 +112,8 @@ StepResult ContactStep::solve(Solver &solver, const SolverSettings &settings,
       within.maxiter = kept_.budget(settings.maxiter);
       result.report = solver.solve(problem_, within, ops_, mu_, u_);
       if (!result.report.converged) {
-        kept_.undo(problem_);
+        kept_.undo();
+        target_rows(0);      // every row's target from its gap again: the paper's
         budgeted = false;    // undo() ended the keeping: later rounds' rows clear
         ++result.kept_undone;
         const int spent = result.report.iterations;
@@ -150,12 +141,9 @@ StepResult ContactStep::solve(Solver &solver, const SolverSettings &settings,
   // what clearing costs now sets the next budgets (kept_overlaps.h)
   if (cleared_from_start) kept_.cleared(result.iterations);
   if (history) history->store(problem_, atom->tag, mu_);    // mu': the solver's variable
-  if (pull_any_) {
-    const int nc = problem_.n_contacts();
-    pull_.resize(nc, 0.0);
-    force_ = mu_;
-    for (int c = 0; c < nc; ++c) force_[static_cast<size_t>(block_) * c] -= pull_[c];
-  }
+  reported_ = nullptr;
+  for (Effect *e : effects_)
+    if (const std::vector<double> *f = e->reported_forces(problem_, mu_, block_)) reported_ = f;
   // The kinetic energy the solve may add (residual.h, energy_within_bound): the work of the
   // forces clearing overlaps present at q^n, sum mu max(0, -D) over the rows; this
   // process's part (the outputs sum it with their own figures, in one reduction).
@@ -165,7 +153,7 @@ StepResult ContactStep::solve(Solver &solver, const SolverSettings &settings,
 
 void ContactStep::find_overlaps(const Solver &solver)
 {
-  const Bodies bodies = build_bodies(solver.traits().needs_owner_map, StepEffects());
+  const Bodies bodies = build_bodies(solver.traits().needs_owner_map, false);
   RowSink sink(problem_, atom->tag, atom->nlocal, free_speed_);
   sink.begin_candidates(0.0);
   offer_rows(bodies, sink);
@@ -179,24 +167,9 @@ void ContactStep::clear()
 
 double ContactStep::memory_usage() const
 {
-  double bytes = (sizeof(int) * 2 + sizeof(double) * 6) * problem_.body_i.capacity();
+  double bytes = (sizeof(int) * 2 + sizeof(double) * 7) * problem_.body_i.capacity();
   bytes += sizeof(double) * 7 * problem_.inv_mass.capacity();
-  bytes += kept_.memory_usage();
   return bytes;
-}
-
-void ContactStep::pair_values_of_rows(const std::vector<double> &table, int first,
-                                      std::vector<double> &out)
-{
-  const int nc = problem_.n_contacts();
-  const int stride = atom->ntypes + 1;
-  const int *type = atom->type;
-  out.resize(nc);
-  for (int c = first; c < nc; ++c) {
-    const int ti = type[problem_.body_i[c]];
-    const int j = problem_.body_j[c];
-    out[c] = table[ti * stride + (is_wall(j) ? ti : type[j])];
-  }
 }
 
 void ContactStep::wall_values_of_rows(const std::vector<double> &by_wall, int first,
@@ -254,7 +227,7 @@ void ContactStep::check_bodies(const std::vector<PlaneWall> &walls) const
 
 // Eq. 14: u_free = u^n + h M^-1 f^{n+1}, f evaluated at q^n (LAMMPS's forces of this state).
 // Atoms outside the group are obstacles: contacts do not change their velocity (inv_mass 0).
-Bodies ContactStep::build_bodies(bool needs_owner_map, const StepEffects &effects)
+Bodies ContactStep::build_bodies(bool needs_owner_map, bool rotates)
 {
   const int nlocal = atom->nlocal;
   const int nall = nlocal + atom->nghost;
@@ -268,7 +241,8 @@ Bodies ContactStep::build_bodies(bool needs_owner_map, const StepEffects &effect
   // a new neighbour list may have sorted or exchanged the atoms: local indices changed
   problem_.renumbered = neighbor->ago == 0;
   problem_.inv_mass.resize(nall);
-  problem_.u_free.resize(nall);
+  // the velocities, then with friction the spins (ContactProblem::u_free)
+  problem_.u_free.resize(rotates ? 2 * static_cast<size_t>(nall) : nall);
   for (int i = 0; i < nall; ++i)
     problem_.inv_mass[i] = (mask[i] & groupbit_) ? force->ftm2v / rmass[i] : 0.0;
 
@@ -301,30 +275,29 @@ Bodies ContactStep::build_bodies(bool needs_owner_map, const StepEffects &effect
                       "check the forces acting on it",
                       static_cast<tagint>(global[kBad]), update->ntimestep);
   reach_.check_radius(global[kRadius]);
-  ops_.forward(doubles(problem_.u_free), kDoublesPerVec3);
 
   // Friction: the bodies rotate. omega^n + h I^-1 torque, as fix nve/sphere would (its full
   // step); obstacles (outside the group) have 1/I = 0.
-  if (effects.friction) {
+  if (rotates) {
     problem_.inv_inertia.resize(nall);
     problem_.radius.assign(atom->radius, atom->radius + nall);
-    problem_.w_free.resize(nall);
     double **omega = atom->omega, **torque = atom->torque;
     for (int i = 0; i < nall; ++i) {
-      const double inertia = effects.inertia * rmass[i] * atom->radius[i] * atom->radius[i];
+      const double inertia = law_.inertia * rmass[i] * atom->radius[i] * atom->radius[i];
       problem_.inv_inertia[i] = (mask[i] & groupbit_) ? force->ftm2v / inertia : 0.0;
     }
     for (int i = 0; i < nlocal; ++i) {
       Vec3 w(omega[i]);
       if (mask[i] & groupbit_) w += (update->dt * problem_.inv_inertia[i]) * Vec3(torque[i]);
-      problem_.w_free[i] = w;
+      problem_.u_free[nall + i] = w;
     }
-    ops_.forward(doubles(problem_.w_free), kDoublesPerVec3);
   } else {
     problem_.inv_inertia.clear();
     problem_.radius.clear();
-    problem_.w_free.clear();
   }
+  // the ghosts' velocities and spins, in one exchange
+  ops_.forward(doubles(problem_.u_free), kDoublesPerVec3, rotates ? 2 : 1,
+               static_cast<long>(kDoublesPerVec3) * nall);
 
   // The owners' coordinates on the ghosts, unshifted: a pair across a periodic boundary is
   // then measured as (x_j - x_i) + k L on both processes holding it (PairSource).

@@ -8,6 +8,7 @@
 
 #include "contact_history.h"
 #include "neighbor_reach.h"
+#include "effects/effect.h"
 #include "sources/contact_source.h"
 
 #include "../core/kept_overlaps.h"
@@ -29,21 +30,14 @@ struct StepResult {
   int kept_undone = 0;          // solves whose kept overlaps were cleared again (0 or 1)
 };
 
-// The opt-in effects of a step; each costs nothing when absent.
-struct StepEffects {
-  // e per type pair ((ntypes + 1)^2, keywords.h), empty for none; bounce_vmin: the approach
-  // speed below which contacts stay inelastic.
-  const std::vector<double> *restitution = nullptr;
-  double bounce_vmin = 0.0;
-  // some wall moves (a plane, a region, a mesh...): rows carry their wall's velocity
-  bool moving_obstacles = false;
-  // F per type pair ((ntypes + 1)^2), empty for none (core/cohesion.h)
-  const std::vector<double> *cohesion = nullptr;
+// The law of the rows and its coefficients, set once (the fix's keywords); the opt-in effects
+// are parts of their own (effects/effect.h), added to the step as they are asked for.
+struct StepLaw {
   // Coulomb coefficient per type pair ((ntypes + 1)^2), null for none: the bodies rotate and
   // the solver must be one made for friction (core/laws/coulomb.h). I = inertia m r^2.
   const std::vector<double> *friction = nullptr;
-  // a wall's own coefficient by wall index (FixOptions::kByType: the type's), null when no
-  // wall has one
+  // a wall's own coefficient by wall index (FixOptions::kByType: the type's), empty when no
+  // wall has one (filled at each init: Obstacles::init)
   const std::vector<double> *wall_friction = nullptr;
   double inertia = 0.4;
   // each resistance's coefficient per type pair (rolling, twisting, ... by index:
@@ -58,10 +52,15 @@ class ContactStep : protected LAMMPS_NS::Pointers {
   ContactStep(LAMMPS_NS::LAMMPS *lmp, int groupbit, DistributedOps &ops,
               const NeighborReach &reach, std::vector<const ContactSource *> sources);
 
+  // The law and its coefficients (before the run).
+  void set_law(const StepLaw &law) { law_ = law; }
+  // One more effect (before the run): its hooks are called every step, in the order added.
+  void add_effect(Effect *effect) { effects_.push_back(effect); }
   // u^{n+1} from the state at q^n; history (nullptr: no warm start) gives the start values
-  // and keeps the result.
+  // and keeps the result. moving_obstacles: some wall moves this step (a plane, a region, a
+  // mesh...), so rows carry their wall's velocity.
   StepResult solve(Solver &solver, const SolverSettings &settings, ContactHistory *history,
-                   const StepEffects &effects);
+                   bool moving_obstacles);
   // Setup: stops with one collective error naming the first atom with a non-finite or
   // non-positive value, or with its centre behind a wall.
   void check_bodies(const std::vector<PlaneWall> &walls) const;
@@ -76,26 +75,26 @@ class ContactStep : protected LAMMPS_NS::Pointers {
   // The contact forces of the last step (mu, or mu' - F with cohesion: core/cohesion.h),
   // block() values per row (the law's: 3 with friction, normal, tangent1, tangent2; then each
   // resistance's components).
-  const std::vector<double> &mu() const { return pull_any_ ? force_ : mu_; }
+  const std::vector<double> &mu() const { return reported_ ? *reported_ : mu_; }
   int block() const { return block_; }
   const std::vector<Vec3> &u() const { return u_; }
   // the kept overlaps' back-off and budget (core/kept_overlaps.h), for restart files
   KeptOverlaps &kept_overlaps() { return kept_; }
 
  private:
-  Bodies build_bodies(bool needs_owner_map, const StepEffects &effects);
+  Bodies build_bodies(bool needs_owner_map, bool rotates);
   void offer_rows(const Bodies &bodies, class RowSink &sink) const;
   // by_wall[wall] of the wall rows first.. into out, where it is the wall's own value
   // (FixOptions::own_friction: not kByType)
   void wall_values_of_rows(const std::vector<double> &by_wall, int first,
                            std::vector<double> &out);
-  // table[type_i, type_j] of rows first.. into out (a wall row: the atom's type with itself)
-  void pair_values_of_rows(const std::vector<double> &table, int first, std::vector<double> &out);
 
   int groupbit_;
   DistributedOps &ops_;
   const NeighborReach &reach_;
   std::vector<const ContactSource *> sources_;
+  StepLaw law_;
+  std::vector<Effect *> effects_;
 
   ContactProblem problem_;
   std::vector<double> mu_;
@@ -103,12 +102,8 @@ class ContactStep : protected LAMMPS_NS::Pointers {
   std::vector<Vec3> x_owner_;
   std::vector<double> free_speed_;    // RowSink's |u_free| per body
   std::vector<double> speed_;         // RowSink's |u| per body after a solve
-  std::vector<Vec3> u_start_;         // u^n per body, for restitution
-  std::vector<double> row_e_;         // restitution per row
-  std::vector<double> row_f_;         // cohesion per row
-  std::vector<double> pull_;          // cohesion pulling each row this step (core/cohesion.h)
-  std::vector<double> force_;         // mu' - pull: the forces reported with cohesion
-  bool pull_any_ = false;
+  // the forces an effect reports instead of the multipliers (cohesion: mu' - F), or null
+  const std::vector<double> *reported_ = nullptr;
   int block_ = 1;
   KeptOverlaps kept_;                 // frictionless overlaps kept, and the back-off
   std::unordered_map<LAMMPS_NS::tagint, int> owner_index_;

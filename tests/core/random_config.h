@@ -36,7 +36,8 @@ inline void add_friction(ContactProblem &p, const std::vector<double> &r, double
   p.radius = r;
   p.inv_inertia.resize(n);
   for (int b = 0; b < n; ++b) p.inv_inertia[b] = p.inv_mass[b] / (0.4 * r[b] * r[b]);
-  p.w_free = w_free.empty() ? std::vector<Vec3>(n, Vec3::Zero()) : w_free;
+  p.u_free.resize(2 * static_cast<size_t>(n), Vec3::Zero());    // the spins after the velocities
+  if (!w_free.empty()) std::copy(w_free.begin(), w_free.end(), p.u_free.begin() + n);
   p.friction.assign(p.n_contacts(), mu);
   p.complete_frames(0);
 }

@@ -8,6 +8,9 @@
 2. Two touching spheres pulled apart by opposite forces f (fix addforce), no gravity: with
    f < F they stay in contact (distance r1 + r2); with f > F they separate.
 3. `cohesion 0` runs the paper's scheme: the same output, bit for bit, as no keyword.
+4. With friction too (`friction 0.5 cohesion 0.5`: the bodies spin, and the pull moves u_free
+   with its spins laid out after the velocities): the pair holds at f < F and opens at f > F
+   as without friction, and nothing spins (the pull is along the line of centres: rotational energy 0).
 Serially and under mpirun (the rank count ctest gives).
 """
 
@@ -64,17 +67,29 @@ def test():
             lr.check(float(z[-1]) < 9.5 - 1.0, "hanging, F = %g < m g: the sphere falls (z = %.4g)"
                      % (F, float(z[-1])))
 
-    # 2. a pair pulled apart
-    for f, holds in ((0.3, True), (0.7, False)):
-        res = lr.run_deck(args.lmp, PAIR.format(keywords="cohesion 0.5", f=f), args.np,
-                          "%s/pair_%g" % (args.workdir, f), timeout=args.timeout)
-        dist = res.thermo[-1]["v_dist"]
-        if holds:
-            lr.check(float(np.abs(dist - 1.0).max()) <= 1e-9, "pair, f = %g < F: stays in contact "
-                     "(largest |distance - 1| %.3g)" % (f, float(np.abs(dist - 1.0).max())))
-        else:
-            lr.check(float(dist[-1]) > 1.5, "pair, f = %g > F: separates (distance %.4g)"
-                     % (f, float(dist[-1])))
+    # 2. a pair pulled apart; 4. the same with friction, where nothing may spin
+    spun = PAIR.replace("variable        dist equal x[2]-x[1]\n",
+                        "variable        dist equal x[2]-x[1]\n"
+                        "compute         w all erotate/sphere\n")
+    spun = spun.replace("custom step v_dist", "custom step v_dist c_w")
+    for deck, keywords, what in ((PAIR, "cohesion 0.5", "pair"),
+                                 (spun, "friction 0.5 cohesion 0.5", "with friction")):
+        for f, holds in ((0.3, True), (0.7, False)):
+            res = lr.run_deck(args.lmp, deck.format(keywords=keywords, f=f), args.np,
+                              "%s/%s_%g" % (args.workdir, what.replace(" ", "_"), f),
+                              timeout=args.timeout)
+            dist = res.thermo[-1]["v_dist"]
+            if holds:
+                lr.check(float(np.abs(dist - 1.0).max()) <= 1e-9, "%s, f = %g < F: stays in "
+                         "contact (largest |distance - 1| %.3g)"
+                         % (what, f, float(np.abs(dist - 1.0).max())))
+            else:
+                lr.check(float(dist[-1]) > 1.5, "%s, f = %g > F: separates (distance %.4g)"
+                         % (what, f, float(dist[-1])))
+            if deck is spun:
+                w = res.thermo[-1]["c_w"]
+                lr.check(float(np.abs(w).max()) <= 1e-24, "%s, f = %g: nothing spins (largest "
+                         "rotational energy %.3g)" % (what, f, float(np.abs(w).max())))
 
     # 3. cohesion 0 is the paper's scheme, to the last bit
     a = lr.run_deck(args.lmp, PAIR.format(keywords="", f=0.3), args.np, args.workdir + "/plain",

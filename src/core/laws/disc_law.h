@@ -112,7 +112,7 @@ struct DiscLaw {
   static void gap_block(const ContactProblem &p, int c, const std::vector<Vec3> &u, double *g)
   {
     const Vec3 v = p.h * p.slip_velocity(c, u);
-    g[0] = p.gap[c] + p.normal[c].dot(v);
+    g[0] = p.target[c] + p.normal[c].dot(v);
     each_disc([&](auto disc, int at) { decltype(disc)::gap(p, c, u, v, g + at); });
   }
   // Adds the velocity change of the impulse h (m_n n + the discs' forces) to the owned bodies

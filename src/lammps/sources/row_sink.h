@@ -43,7 +43,7 @@ class RowSink {
   {
     offer_row(i, j, n, d, size, &u_wall);
   }
-  // moving: some wall moves this step (StepEffects::moving_obstacles), so every row records
+  // moving: some wall moves this step (ContactStep::solve), so every row records
   // its wall's velocity (zero for a pair or a wall at rest).
   void set_moving(bool moving) { moving_ = moving; }
   // How far apart the surfaces of pair (i, j) may be and the pair still become a row in this
