@@ -18,17 +18,17 @@ namespace hardcontact {
 // The pair's relative spin about the normal: a torque R m_w n on j (its opposite on i),
 // |m_w| <= mut m_n.
 struct TwistingDisc : CoupleDisc<1, TwistingDisc> {
-  static constexpr const char *keyword = "twisting";
-  static constexpr const char *usage =
-      "twisting mut [I J]: twisting resistance >= 0 (torque about the normal at most mut R F_n) "
-      "for type pairs I J (all: default)";
-  static constexpr const char *bound =
-      "a coefficient >= 0 (the twisting torque is at most twisting x R x the normal force)";
   static constexpr int size = 1;
   static const Vec3 &axis(const ContactProblem &p, int c, int) { return p.normal[c]; }
   // n is orthogonal to the tangents: no entry of A couples this row with the others
   static constexpr bool coupled = false;
   static double coupling(const ContactProblem &, int) { return 0.0; }
+  static constexpr const char *keyword = "twisting";
+  static constexpr const char *bound =
+      "a coefficient >= 0 (the twisting torque is at most twisting x R x the normal force)";
+  static constexpr const char *usage =
+      "twisting mut [I J]: twisting resistance >= 0 (torque about the normal at most mut R F_n) "
+      "for type pairs I J (all: default)";
 };
 
 // two discs: the tangential force, then the twisting one, |m_w| <= twisting m_n
