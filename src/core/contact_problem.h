@@ -76,8 +76,9 @@ struct ContactProblem {
 
   // Friction (laws/coulomb.h), present only when a scene asks for it. The bodies then rotate:
   // a velocity vector holds n_bodies() linear velocities followed by n_bodies() angular ones
-  // (n_dof(), u_free too). Per body: 1/I (0 for an obstacle), the radius. Per row: the Coulomb coefficient, two tangents completing the normal to an orthonormal frame,
-  // and the arms from each centre to the contact point (complete_frames).
+  // (n_dof(), u_free too). Per body: 1/I (0 for an obstacle), the radius. Per row: the
+  // Coulomb coefficient, two tangents completing the normal to an orthonormal frame, and the
+  // arms from each centre to the contact point (complete_frames).
   std::vector<double> inv_inertia;
   std::vector<double> radius;
   std::vector<double> friction;

@@ -70,6 +70,7 @@ void Targets::apply(ContactProblem &p, int first_row) const
     p.target[c] = target;
   }
 }
+
 bool Targets::pushed(int c) const
 {
   if (kept_overlaps == nullptr || !kept_overlaps->active() || warm == nullptr) return false;

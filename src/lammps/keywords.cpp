@@ -31,11 +31,10 @@ struct Keyword {
   const char *name;
   int nvalues;
   int optional;    // values that may follow (e.g. type ranges I J), all or none
-  Parser parse;    // null for an effect's keyword:
+  Parser parse;    // null for an effect's keyword, which fills its effect's object instead:
   const char *doc;
-  // an effect's keyword (effects/effect.h): its kind's index in effect_kinds(), and the row
-  const EffectKeyword *effect_row = nullptr;
-  int effect = -1;
+  const EffectKeyword *effect_row = nullptr;    // its row (effects/effect.h)
+  int effect = -1;                              // its kind's index in effect_kinds()
 };
 
 bool is_keyword(const char *word);
@@ -55,9 +54,11 @@ double keyword_number(LAMMPS *lmp, const char *keyword, const char *word)
   return utils::numeric(FLERR, word, false, lmp);
 }
 
+namespace {
+
 // A value per type pair (I, J LAMMPS type ranges, default every pair; later lines win) into a
 // (ntypes + 1)^2 table.
-static void set_pair_values(LAMMPS *lmp, char **values, int n, double value, std::vector<double> &table)
+void set_pair_values(LAMMPS *lmp, char **values, int n, double value, std::vector<double> &table)
 {
   const int ntypes = lmp->atom->ntypes;
   int ilo = 1, ihi = ntypes, jlo = 1, jhi = ntypes;
@@ -72,6 +73,8 @@ static void set_pair_values(LAMMPS *lmp, char **values, int n, double value, std
       table[j * (ntypes + 1) + i] = value;
     }
 }
+
+}    // namespace
 
 // One coefficient per type pair, in [lo, hi]; else "Fix hardcontact NAME must be WHAT, got V".
 void parse_pair_coefficient(LAMMPS *lmp, const char *name, const char *what, double lo,
@@ -317,8 +320,10 @@ int parse_wall_rotate(LAMMPS *lmp, char **arg, int narg, int iarg, FixOptions &o
                       w);
   FixOptions::MeshWall &m = o.wall_meshes.back();
   m.theta = w + 2;
-  for (int d = 0; d < 3; ++d) m.point[d] = keyword_number(lmp, "wall stl rotate P", arg[iarg + 2 + d]);
-  for (int d = 0; d < 3; ++d) m.axis[d] = keyword_number(lmp, "wall stl rotate A", arg[iarg + 5 + d]);
+  for (int d = 0; d < 3; ++d)
+    m.point[d] = keyword_number(lmp, "wall stl rotate P", arg[iarg + 2 + d]);
+  for (int d = 0; d < 3; ++d)
+    m.axis[d] = keyword_number(lmp, "wall stl rotate A", arg[iarg + 5 + d]);
   if (m.axis[0] == 0.0 && m.axis[1] == 0.0 && m.axis[2] == 0.0)
     lmp->error->all(FLERR, "Fix hardcontact wall stl ... rotate: the axis direction is zero");
   return 8;

@@ -71,15 +71,13 @@ StepResult ContactStep::solve(Solver &solver, const SolverSettings &settings,
   };
   int targeted = 0;    // rows before it have their targets (and friction, its frames)
   auto prepare_rows = [&]() {
-    if (law_.friction) {
-      pair_values_of_rows(problem_, atom->type, atom->ntypes, *law_.friction, targeted,
-                          problem_.friction);
+    if (law_.friction) {    // the law's coefficients per row, as the effects read theirs
+      effect_step.pair_values(*law_.friction, targeted, problem_.friction);
       if (law_.wall_friction && !law_.wall_friction->empty())
         wall_values_of_rows(*law_.wall_friction, targeted, problem_.friction);
       for (int r = 0; r < kResistances; ++r)
         if (law_.resistance[r])
-          pair_values_of_rows(problem_, atom->type, atom->ntypes, *law_.resistance[r], targeted,
-                              problem_.resistance[r]);
+          effect_step.pair_values(*law_.resistance[r], targeted, problem_.resistance[r]);
       problem_.complete_frames(targeted);
     }
     // Warm start: each row starts from the multiplier its pair had at the last step, if any
