@@ -117,6 +117,8 @@ def main():
     ap.add_argument("--seed", type=int, default=15,
                     help="the pile's seed (diameters and offsets; 15: the recorded fronts); "
                          "another seed writes its own work folder and CSV (..._seed<N>)")
+    ap.add_argument("--fix-extra", default="",
+                    help="more fix hardcontact keywords for every hard run (e.g. 'speed contact')")
     ap.add_argument("--reuse", action="store_true",
                     help="read the runs whose deck is unchanged and finished from their logs")
     a = ap.parse_args()
@@ -152,12 +154,12 @@ def main():
     grid = [g + ("",) for g in grid] + cones
     for solver, tol, h, cone in grid:
         rid = "%s_tol%g_h%g%s" % (solver, tol, h, "_" + cone if cone else "")
-        extra = "cone " + cone if cone else ""
+        extra = ("cone " + cone if cone else "") + (" " + a.fix_extra if a.fix_extra else "")
         runs.append((rid, "hard", hard_deck(scene, str(data), solver, tol, h, T, extra),
                      dict(solver=solver + ("/" + cone if cone else ""), tol=tol, h=h)))
     # adaptive steps (fix dt/reset): up to 0.08, at most 0.1 d per step, the default solver
     rid = "hybrid_tol0.01_dtreset0.08"
-    runs.append((rid, "hard", adaptive(hard_deck(scene, str(data), "hybrid", 1e-2, 0.02, T), 0.08,
+    runs.append((rid, "hard", adaptive(hard_deck(scene, str(data), "hybrid", 1e-2, 0.02, T, a.fix_extra), 0.08,
                                        0.1, T), dict(solver="hybrid/dt-reset", tol=1e-2, h=0.08)))
     for ov in (1e-2, 1e-3):
         # hertz_params sets the static overlap of a pair under a column's load relative to d;

@@ -58,6 +58,9 @@ struct ContactProblem {
   // found it for this solve round (it needs V itself, for its targets): the solver then
   // takes it instead of reducing it again. Negative: unknown, the solver finds it.
   double speed_scale = -1.0;
+  // Friction: V is the contact points' speed, not their approach (residual.h, free_speed_scale;
+  // SolverSettings::contact_speed, the fix's `speed contact`).
+  bool contact_speed_scale = false;
   // The bodies may be numbered differently from the last solve's problem (the host's new
   // neighbour list moved them): what a solver keeps per row from one solve to the next
   // (ProjectedCg's subspace) is then stale. True unless the host knows better.

@@ -31,7 +31,22 @@ inline double row_violation(double g, double mu, double scale)
   return NormalLaw::violation(g, mu, scale);
 }
 
-// V: the largest |n_c . (u_free_j - u_free_i)| over all rows of all processes (u_wall = 0).
+// V, over all rows of all processes: the largest normal approach speed
+// |n_c . (u_free_j - u_free_i)|; with p.contact_speed_scale and friction (the problem carries
+// spins; its frames must be complete) the largest speed of the contact points relative to each
+// other, |slip_velocity(c, u_free)|, whose normal part is that approach (a moving wall's normal
+// speed is in its target, so only its tangential part counts, as in the slip).
+//
+// Why the contact points' speed is offered: Coulomb's law constrains the slip as well as the
+// approach, and in a packing that rearranges spheres slide past one another far faster than
+// they approach, so the approach alone asks for velocities right to a few 1e-4 of the slides.
+// A sphere that rolls without slip adds nothing (its contact point does not move), and at rest
+// V is g h either way (gravity moves every body alike: only wall rows feel it). Why it is not
+// the default: V is one scale for every row, and a body that slides as a whole then has its
+// inner contacts solved to tol of its slide speed instead of g h; a bed sliding to rest was
+// left agitated at about 5 tol g h and crept 50 x more at rest (tests/integration/
+// test_stab_friction.py, case slide_contact_speed). Measured on issue 36's scenes, same run:
+// bench/friction/README.md, "The speed of the stopping test's scale".
 double free_speed_scale(const ContactProblem &p, DistributedOps &ops);
 
 // s_c = min(size_c, h V), but tol s_c never below the round-off of the gap: kGapRoundoff

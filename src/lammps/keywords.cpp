@@ -179,6 +179,17 @@ void parse_cone(LAMMPS *lmp, char **values, int, FixOptions &o)
   o.cone_given = true;
 }
 
+void parse_speed(LAMMPS *lmp, char **values, int, FixOptions &o)
+{
+  const std::string value = values[0];
+  if (value != "approach" && value != "contact")
+    compat::error_all(lmp->error, FLERR,
+                      "Fix hardcontact speed must be approach (the default) or contact, got '{}'",
+                      value);
+  o.settings.contact_speed = value == "contact";
+  o.speed_given = true;
+}
+
 void parse_wall(LAMMPS *lmp, char **values, int n, FixOptions &o)
 {
   const std::string plane = values[0];
@@ -398,6 +409,9 @@ const Keyword after_effects[] = {
      "within 3 tol of Coulomb's (lagged, the default), brought to its fixed point in every solve "
      "(exact), or none (convex: Anitescu and Tasora's relaxation, sliding contacts lift off at "
      "mu |slip|)"},
+    {"speed", 1, 0, parse_speed,
+     "speed approach|contact: the speed V of the stopping test's scale h V, the contact points' "
+     "fastest approach (the default) or, with friction, their fastest motion, slides included"},
     // rolling, twisting, ...: a row per resistance
     HARDCONTACT_RESISTANCES(HARDCONTACT_RESISTANCE_ROW)
     {"disc", 0, 0, parse_disc, "disc: 2d discs, moment of inertia 1/2 m r^2"},

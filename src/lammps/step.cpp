@@ -44,6 +44,9 @@ StepResult ContactStep::solve(Solver &solver, const SolverSettings &settings,
   sink.set_moving(moving_obstacles);
   sink.begin_candidates(1.0);
   offer_rows(bodies, sink);
+  // with friction V may be the contact points' speed (core/residual.h), which needs the frames
+  if (law_.friction) problem_.complete_frames(0);
+  problem_.contact_speed_scale = settings.contact_speed;
   const double speed_scale = free_speed_scale(problem_, ops_);    // V (core/residual.h)
   Targets targets{bodies.recovery_speed, speed_scale, settings.tol};
   // Frictionless rows that pushed keep shallow overlaps while solves stay within a budget
@@ -78,7 +81,7 @@ StepResult ContactStep::solve(Solver &solver, const SolverSettings &settings,
       for (int r = 0; r < kResistances; ++r)
         if (law_.resistance[r])
           effect_step.pair_values(*law_.resistance[r], targeted, problem_.resistance[r]);
-      problem_.complete_frames(targeted);
+      if (targeted > 0) problem_.complete_frames(targeted);    // the first rows' are made above
     }
     // Warm start: each row starts from the multiplier its pair had at the last step, if any
     // (after the frames, which its tangential parts are projected on; before the targets,

@@ -1,5 +1,6 @@
 // The stopping test every solver shares (residual.h, working_set.h):
-//  - row scales: min(size, h V) with V the fastest free normal approach, a round-off floor;
+//  - row scales: min(size, h V) with V the fastest free normal approach (with friction and
+//    `speed contact`, the contact points' fastest motion), a round-off floor;
 //  - Prop. 3 for inexact solves: with no row overlapping at q^n, a solve stopped at the default
 //    tol never returns more kinetic energy than u_free has, from any start (garbage warm
 //    starts included), for every iterative solver;
@@ -39,6 +40,44 @@ TEST(RowScale, FreeSpeedScaleIsTheFastestNormalApproach)
   hctest::add_pair(p, 0, 1, Vec3(0, 0, 0), Vec3(1, 0, 0), 0.5, 0.5);    // approach 3 along x
   hctest::add_wall(p, 2, Vec3(0, 0, 0.5), 0.5, Vec3(0, 0, 0), Vec3(0, 0, 1));    // 0.5
   EXPECT_DOUBLE_EQ(free_speed_scale(p, ops), 3.0);
+}
+
+// `speed contact` (ContactProblem::contact_speed_scale) with friction: Coulomb's law
+// constrains the slip as well as the approach, so V is the fastest relative motion of the
+// contact points (a moving wall's tangential velocity included); a sphere rolling without slip
+// adds nothing, and at rest under gravity V is still g h (only the walls feel the common kick).
+// Without the setting V is the approach, friction or not.
+TEST(RowScale, FreeSpeedScaleWithFrictionIsTheContactPointsSpeed)
+{
+  SerialOps ops;
+  auto p = hctest::make_problem(0.1, {1.0, 1.0, 1.0}, std::vector<Vec3>(3, Vec3::Zero()));
+  hctest::add_pair(p, 0, 1, Vec3(0, 0, 0), Vec3(1, 0, 0), 0.5, 0.5);
+  hctest::add_wall(p, 2, Vec3(0, 0, 0.5), 0.5, Vec3(0, 0, 0), Vec3(0, 0, 1));
+  hctest::add_friction(p, {0.5, 0.5, 0.5}, 0.5);
+  const int n = 3;
+  auto speed = [&](const std::vector<Vec3> &v, const std::vector<Vec3> &w) {
+    for (int b = 0; b < n; ++b) {
+      p.u_free[b] = v[b];
+      p.u_free[n + b] = w[b];
+    }
+    return free_speed_scale(p, ops);
+  };
+  const std::vector<Vec3> still(3, Vec3::Zero());
+  // the pair approaches at 3 and slides at 5: |(-3, 5, 0)|, not 3
+  EXPECT_DOUBLE_EQ(speed({Vec3(1, 0, 0), Vec3(-2, 5, 0), Vec3::Zero()}, still), 3.0);
+  p.contact_speed_scale = true;
+  EXPECT_DOUBLE_EQ(speed({Vec3(1, 0, 0), Vec3(-2, 5, 0), Vec3::Zero()}, still), std::sqrt(34.0));
+  // sphere 2 rolls at 3 on the floor (spin 6 about y, r 0.5): its contact point is still
+  const std::vector<Vec3> rolling = {Vec3::Zero(), Vec3::Zero(), Vec3(3, 0, 0)};
+  EXPECT_DOUBLE_EQ(speed(rolling, {Vec3::Zero(), Vec3::Zero(), Vec3(0, 6, 0)}), 0.0);
+  EXPECT_DOUBLE_EQ(speed(rolling, still), 3.0);    // the same sphere sliding
+  // at rest under gravity: every sphere kicked by -g h alike
+  const double gh = 0.01;
+  EXPECT_DOUBLE_EQ(speed(std::vector<Vec3>(3, Vec3(0, 0, -gh)), still), gh);
+  // a belt under sphere 2 moving at 7 along y (its own normal speed would be in the target)
+  p.wall_velocity.assign(p.n_contacts(), Vec3::Zero());
+  p.wall_velocity[1] = Vec3(0, 7, 0.25);
+  EXPECT_DOUBLE_EQ(speed(still, still), 7.0);
 }
 
 class EnergyOfInexactSolves : public ::testing::TestWithParam<std::string> {

@@ -201,6 +201,11 @@ CASES = [
          ["cone must be lagged (the default), exact or convex", "'coulomb'"]),
     case("cone_no_friction", deck("cone convex"),
          ["cone applies with friction only", "remove cone or add friction"], np4=True),
+    # speed
+    case("speed_unknown", deck("friction 0.5 speed slip"),
+         ["speed must be approach (the default) or contact", "'slip'"]),
+    case("speed_contact_no_friction", deck("speed contact"),
+         ["speed contact applies with friction only", "remove speed or add friction"]),
     case("subspace_friction", deck("friction 0.5 subspace 10"),
          ["subspace applies without friction only", "remove subspace or friction"], np4=True),
     # rho

@@ -11,6 +11,13 @@ region `plane` under g = 1; friction 0.8 between spheres, 0.3 on the floor (the 
   the floor.
 --case slide (a bed sliding to rest): the bed starts at V = 1 on the fixed floor; it stops at
   t = V / (mu_w g) = 3.33 with P_x = M (V - mu_w g t).
+--case slide_contact_speed: the slide under `speed contact` (the stopping test's V is the
+  contact points' fastest motion, slides included: core/residual.h). While the bed slides
+  V is its slide speed, so the bed's inner contacts are solved to tol V instead of tol g h,
+  and it comes to rest agitated at the tolerance's level: its rest checks are the heavy
+  case's bounds (below), which is what the option costs. Measured 2026-12-07: speeds 1.8e-4,
+  spins r 3.3e-4, creep 2.2e-3 d, 7 iterations per step at rest, against 4e-5 d and 0.8 with
+  the default `speed approach` (the slide case).
 --case heavy (a mass ratio of 1000 on a frictional bed): the bed at rest on the fixed floor
   and, in a hollow of its top layer, one sphere of the same size and 1000 x the density; it
   must rest there, the bed under it held by friction. At tol 1e-2 the solves leave velocity
@@ -98,12 +105,15 @@ def scene(case, data, keywords="", dumps=True):
     return text, n, side, (V if case == "conveyor" else 0.0)
 
 
-def run_case(args, case, checks):
-    wd = lr.fresh_workdir("%s/%s" % (args.workdir, case))
+def run_case(args, label, checks):
+    # slide_contact_speed: the slide under `speed contact`, held to what tol allows (docstring)
+    case = "slide" if label == "slide_contact_speed" else label
+    within_tol = label in ("heavy", "slide_contact_speed")
+    wd = lr.fresh_workdir("%s/%s" % (args.workdir, label))
     data = wd.parent / ("bed_%s.data" % case)
-    text, n, side, floor_speed = scene(case, data)
+    text, n, side, floor_speed = scene(case, data,
+                                       "speed contact" if label == "slide_contact_speed" else "")
     res, th = sc.run(args, text, wd, str(data))
-    label = case
     sc.check_common(th, n, TOL, label, check=checks)
 
     mass = 4.0 / 3.0 * math.pi * R ** 3
@@ -152,8 +162,8 @@ def run_case(args, case, checks):
     ke_rel = th["c_ke"] - P[:, 0] * floor_speed + 0.5 * M * floor_speed ** 2
     worst_ke = float(ke_rel[rest].max()) / (n * mass * G * 2 * R)
     # the heavy case: speeds and moves within what tol allows (the docstring)
-    speed_bound = 4.0 * TOL * G * H if case == "heavy" else 1e-3 * V
-    move_bound = 2.0 * TOL * G * H * T_REST if case == "heavy" else 1e-3 * 2 * R
+    speed_bound = 4.0 * TOL * G * H if within_tol else 1e-3 * V
+    move_bound = 2.0 * TOL * G * H * T_REST if within_tol else 1e-3 * 2 * R
     if case != "heavy":
         checks(worst_ke <= 1e-6, "%s: at rest in the floor's frame over the last %g time units "
                "(kinetic energy relative to the floor %.2g m g d per sphere)"
