@@ -66,7 +66,7 @@ hardcontact::FixOptions checked_options(LAMMPS *lmp, int narg, char **arg)
   if (o.cone_given && !o.has_friction())
     lmp->error->all(FLERR, "Fix hardcontact cone applies with friction only (it is the "
                            "Coulomb cone's treatment): remove cone or add friction");
-  if (o.speed_given && o.settings.contact_speed && !o.has_friction())
+  if (o.settings.contact_speed && !o.has_friction())
     lmp->error->all(FLERR, "Fix hardcontact speed contact applies with friction only (without "
                            "it the law constrains the approach alone): remove speed or add "
                            "friction");

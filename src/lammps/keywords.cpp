@@ -187,7 +187,6 @@ void parse_speed(LAMMPS *lmp, char **values, int, FixOptions &o)
                       "Fix hardcontact speed must be approach (the default) or contact, got '{}'",
                       value);
   o.settings.contact_speed = value == "contact";
-  o.speed_given = true;
 }
 
 void parse_wall(LAMMPS *lmp, char **values, int n, FixOptions &o)

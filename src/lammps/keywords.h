@@ -33,7 +33,6 @@ struct FixOptions {
   static constexpr double kFrictionTol = 1.0e-2;
   // whether `cone` was given (settings.cone): it applies with friction only
   bool cone_given = false;
-  bool speed_given = false;
   std::vector<PlaneWall> walls;
   std::vector<std::string> wall_variables;    // per wall: equal-style variable name, or ""
   // walls of a kind in the table of sources/wall_kinds.cpp (`wall region ID`, ...), in the
