@@ -14,7 +14,7 @@
 #      OLD_ENV / NEW_ENV: environment settings for either build (an experimental build's
 #      switch), passed through `env`.
 set -euo pipefail
-OLD="$1"; NEW="$2"; shift 2
+OLD="$(realpath "$1")"; NEW="$(realpath "$2")"; shift 2    # the runs cd into the examples
 # shellcheck source=../common.sh
 source "$(dirname "${BASH_SOURCE[0]}")/../common.sh" friction_builds_ "$@"
 EX="$ROOT/examples"
@@ -29,11 +29,14 @@ CSV="$RESULTS/friction_builds.csv"
 [ "$MODE" = quick ] && CSV="$RESULTS/friction_builds_quick.csv"
 echo "scene,build,seed,observable,value,loop_s,steps,it_mean,overlap_max,maxiter_stops,load1" > "$CSV"
 
-lmp_of() { if [ "$1" = old ]; then echo "$OLD"; else echo "$NEW"; fi; }
-kw_of() { if [ "$1" = old ]; then echo "${OLD_KEYWORDS:-}"; else echo "${NEW_KEYWORDS:-}"; fi; }
-env_of() { if [ "$1" = old ]; then echo "${OLD_ENV:-}"; else echo "${NEW_ENV:-}"; fi; }
+# per run (old, new): the executable, its extra fix keywords, its environment
+declare -A LMP_OF=([old]="$OLD" [new]="$NEW")
+declare -A KW_OF=([old]="${OLD_KEYWORDS:-}" [new]="${NEW_KEYWORDS:-}")
+declare -A ENV_OF=([old]="${OLD_ENV:-}" [new]="${NEW_ENV:-}")
+lmp_of() { echo "${LMP_OF[$1]}"; }
+kw_of() { echo "${KW_OF[$1]}"; }
 # run BUILD COMMAND...: the command with the build's environment and HARDCONTACT_LMP
-run() { local b="$1"; shift; env $(env_of "$b") HARDCONTACT_LMP="$(lmp_of "$b")" "$@"; }
+run() { local b="$1"; shift; env ${ENV_OF[$b]} HARDCONTACT_LMP="${LMP_OF[$b]}" "$@"; }
 
 # hard_stats LOG: iterations per step (mean over the thermo rows after the first), the
 # largest overlap / size and the solves at maxiter
