@@ -13,6 +13,7 @@ import os
 import shutil
 import signal
 import subprocess
+import tempfile
 import time
 from pathlib import Path
 
@@ -243,11 +244,17 @@ def run_deck(lmp, deck, np=1, workdir=".", variables=None, expect_error=False,
     run_env.setdefault("OMPI_ALLOW_RUN_AS_ROOT_CONFIRM", "1")
     run_env.setdefault("OMPI_MCA_mpi_yield_when_idle", "1")   # ranks > cores: do not spin
     run_env.setdefault("OMP_NUM_THREADS", "1")
-    if int(np) == 1:
+    session_dir = None
+    if int(np) == 1 and "OMPI_MCA_ess_singleton_isolated" not in run_env:
         # A serial run is an MPI singleton: by default Open MPI starts an orted daemon for it,
         # 0.17 s of each run's 0.46 s start-up (a trivial deck, every host); isolated, the run
-        # does not spawn one (it needs none: no MPI_Comm_spawn).
-        run_env.setdefault("OMPI_MCA_ess_singleton_isolated", "1")
+        # does not spawn one (it needs none: no MPI_Comm_spawn). Isolated singletons all take
+        # job family 0, so they would share one session directory, and one ending removed it
+        # under another one starting (orte_session_dir failed, once in a CI run): each run
+        # gets its own.
+        session_dir = tempfile.mkdtemp(prefix="hc-ompi-")
+        run_env["OMPI_MCA_ess_singleton_isolated"] = "1"
+        run_env["OMPI_MCA_orte_tmpdir_base"] = session_dir
     if expect_error and int(np) > 1:
         # Once the first rank exits non-zero, mpirun waits odls_base_sigkill_timeout (1 s)
         # before it kills the others. A run meant to fail needs no grace: 1.46 -> 0.38 s per
@@ -273,6 +280,8 @@ def run_deck(lmp, deck, np=1, workdir=".", variables=None, expect_error=False,
         err.seek(0)
         stdout, stderr = out.read(), err.read()
     seconds = time.monotonic() - t0
+    if session_dir is not None:
+        shutil.rmtree(session_dir, ignore_errors=True)
     log = log_path.read_text(errors="replace") if log_path.exists() else ""
 
     res = RunResult(cmd, workdir, returncode, stdout, stderr, log, seconds, timed_out)
