@@ -58,7 +58,8 @@ struct ContactProblem {
   // found it for this solve round (it needs V itself, for its targets): the solver then
   // takes it instead of reducing it again. Negative: unknown, the solver finds it.
   double speed_scale = -1.0;
-  // Friction: V is the contact points' speed, not their approach (residual.h, free_speed_scale;
+  // Friction: the slip conditions are measured against the contact points' speed V_t, the gap
+  // conditions against the approach V (residual.h, contact_speed_scale;
   // SolverSettings::contact_speed, the fix's `speed contact`).
   bool contact_speed_scale = false;
   // The bodies may be numbered differently from the last solve's problem (the host's new

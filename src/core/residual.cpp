@@ -9,11 +9,15 @@ double free_speed_scale(const ContactProblem &p, DistributedOps &ops)
 {
   double v = 0.0;
   const int nc = p.n_contacts();
-  if (p.contact_speed_scale && p.rotates()) {
-    for (int c = 0; c < nc; ++c) v = std::max(v, p.slip_velocity(c, p.u_free).norm());
-  } else {
-    for (int c = 0; c < nc; ++c) v = std::max(v, std::abs(p.normal_speed(c, p.u_free)));
-  }
+  for (int c = 0; c < nc; ++c) v = std::max(v, std::abs(p.normal_speed(c, p.u_free)));
+  return ops.max_all(v);
+}
+
+double contact_speed_scale(const ContactProblem &p, DistributedOps &ops)
+{
+  double v = 0.0;
+  const int nc = p.n_contacts();
+  for (int c = 0; c < nc; ++c) v = std::max(v, p.slip_velocity(c, p.u_free).norm());
   return ops.max_all(v);
 }
 

@@ -32,22 +32,33 @@ inline double row_violation(double g, double mu, double scale)
 }
 
 // V, over all rows of all processes: the largest normal approach speed
-// |n_c . (u_free_j - u_free_i)|; with p.contact_speed_scale and friction (the problem carries
-// spins; its frames must be complete) the largest speed of the contact points relative to each
-// other, |slip_velocity(c, u_free)|, whose normal part is that approach (a moving wall's normal
-// speed is in its target, so only its tangential part counts, as in the slip).
-//
-// Why the contact points' speed is offered: Coulomb's law constrains the slip as well as the
-// approach, and in a packing that rearranges spheres slide past one another far faster than
-// they approach, so the approach alone asks for velocities right to a few 1e-4 of the slides.
-// A sphere that rolls without slip adds nothing (its contact point does not move), and at rest
-// V is g h either way (gravity moves every body alike: only wall rows feel it). Why it is not
-// the default: V is one scale for every row, and a body that slides as a whole then has its
-// inner contacts solved to tol of its slide speed instead of g h; a bed sliding to rest was
-// left agitated at about 5 tol g h and crept 50 x more at rest (tests/integration/
-// test_stab_friction.py, case slide_contact_speed). Measured on issue 36's scenes, same run:
-// bench/friction/README.md, "The speed of the stopping test's scale".
+// |n_c . (u_free_j - u_free_i)|. It scales every gap condition (the predicted gap, and with
+// friction the normal condition of the cone, De Saxce's shift included).
 double free_speed_scale(const ContactProblem &p, DistributedOps &ops);
+
+// V_t, over all rows of all processes: the largest speed of the contact points relative to
+// each other, |slip_velocity(c, u_free)| (the problem carries spins; its frames must be
+// complete), whose normal part is the approach (a moving wall's normal speed is in its
+// target, so only its tangential part counts, as in the slip). With p.contact_speed_scale
+// (the fix's `speed contact`) the slip conditions of the frictional laws - a sticking disc's
+// slip, a sliding disc's direction against its force - are measured against h max(V, V_t)
+// instead of h V (WorkingSet, tangential scales; laws/disc_law.h, violation).
+//
+// Why: Coulomb's law constrains the slip as well as the approach, and in a packing that
+// rearranges spheres slide past one another far faster than they approach, so the approach
+// alone asks for slip directions right to a few 1e-4 of the slides. A sphere that rolls
+// without slip adds nothing (its contact point does not move), and at rest V_t is V = g h
+// (gravity moves every body alike: only wall rows feel it), so a resting packing is solved as
+// by default. The gap conditions keep h V: measured against h V_t as well (the option's first
+// form, one scale for every condition), a bed sliding on a floor opened its inner contacts by
+// up to tol h V_t per step, lost 100-160 of its 740 contact rows to that dilation and came to
+// rest agitated (16 iterations per step, creep 50 x the default's); with the gap conditions
+// at h V it keeps its contacts (727) and rests as quietly as by default (1.0 iteration per
+// step) after a third of the default's iterations (bench/friction/README.md, "Two scales").
+// The normal condition of a sticking contact holds mu |slip| (1 - |m_t| / (mu m_n)) (the
+// shift's lift), so a stick well inside its cone is still held to h V in its slip; a slide
+// on its cone's edge is held to h V_t in its direction.
+double contact_speed_scale(const ContactProblem &p, DistributedOps &ops);
 
 // s_c = min(size_c, h V), but tol s_c never below the round-off of the gap: kGapRoundoff
 // size_c, or the host's absolute gap_roundoff (coordinates far larger than the sizes).

@@ -32,9 +32,10 @@ struct SolverSettings {
   //     problem): a sliding contact lifts off at mu |slip| in every step.
   enum class Cone { Lagged, Exact, Convex };
   Cone cone = Cone::Lagged;
-  // Friction: the speed V of the stopping test's scale h V (residual.h) is the fastest motion of
-  // the contact points, slides included, instead of their fastest approach (the default). The
-  // host passes it on in ContactProblem::contact_speed_scale.
+  // Friction: the slip conditions of the stopping test are measured against h max(V, V_t), V_t
+  // the fastest motion of the contact points, slides included; the gap conditions keep h V, V
+  // the fastest approach (residual.h, contact_speed_scale). Default: h V for both. The host
+  // passes it on in ContactProblem::contact_speed_scale.
   bool contact_speed = false;
   // Developers: when set, an iterative solver of the frictionless law writes the problem it
   // receives to this file before it starts (problem_dump.h); empty = nothing written.

@@ -30,7 +30,8 @@ class WorkingSet {
                 const std::vector<double> &mu, const std::vector<Vec3> &u, DistributedOps &ops);
 
   // Rows with a start multiplier > 0, or whose gap the free relative speed closes in one step;
-  // and the tolerance scale of every row (residual.h).
+  // and the tolerance scales of every row (residual.h: its gap conditions', and with friction
+  // its slip conditions').
   void init(const ContactProblem &p, const std::vector<double> &mu, double tol,
             DistributedOps &ops);
   // Adds the rows outside the set that u violates by more than tol (predicted overlap: a row
@@ -51,7 +52,12 @@ class WorkingSet {
   // Law::block components, k: its coefficients).
   double violation(int c, const double *g, const double *m, const Coefficients &k) const
   {
-    return Law::violation(g, m, k, scale_[c]);
+    if constexpr (Law::block > 1) {
+      double unused;
+      return Law::violation(g, m, k, scale_[c], slip_scale_[c], unused, -1.0);
+    } else {
+      return Law::violation(g, m, k, scale_[c]);
+    }
   }
   // The same for a largest violation over rows (friction: it may return floor when at most
   // floor, laws/coulomb.h), also giving Law::shift(g, k), computed with it at no extra cost
@@ -60,14 +66,14 @@ class WorkingSet {
                    double &shift, double floor) const
   {
     if constexpr (Law::block > 1) {
-      return Law::violation(g, m, k, scale_[c], shift, floor);
+      return Law::violation(g, m, k, scale_[c], slip_scale_[c], shift, floor);
     } else {
       shift = 0.0;
       return Law::violation(g, m, k, scale_[c]);
     }
   }
   double scale(int c) const { return scale_[c]; }
-  double memory_usage() const { return bytes_of(rows_, member_, scale_); }
+  double memory_usage() const { return bytes_of(rows_, member_, scale_, slip_scale_); }
   const std::vector<double> &scales() const { return scale_; }
   double speed_scale() const { return speed_scale_; }
 
@@ -75,6 +81,7 @@ class WorkingSet {
   std::vector<int> rows_;
   std::vector<char> member_;
   std::vector<double> scale_;
+  std::vector<double> slip_scale_;    // friction: the slip conditions' (init)
   double speed_scale_ = 0.0;
   int next_check_ = 1;
 };

@@ -44,7 +44,8 @@ StepResult ContactStep::solve(Solver &solver, const SolverSettings &settings,
   sink.set_moving(moving_obstacles);
   sink.begin_candidates(1.0);
   offer_rows(bodies, sink);
-  // with friction V may be the contact points' speed (core/residual.h), which needs the frames
+  // with friction the frames of the first rows (the working set's slip scales read them,
+  // core/residual.h, contact_speed_scale)
   if (law_.friction) problem_.complete_frames(0);
   problem_.contact_speed_scale = settings.contact_speed;
   const double speed_scale = free_speed_scale(problem_, ops_);    // V (core/residual.h)

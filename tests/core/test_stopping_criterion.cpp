@@ -1,12 +1,14 @@
 // The stopping test every solver shares (residual.h, working_set.h):
 //  - row scales: min(size, h V) with V the fastest free normal approach (with friction and
-//    `speed contact`, the contact points' fastest motion), a round-off floor;
+//    `speed contact`, the slip conditions' from the contact points' fastest motion), a
+//    round-off floor;
 //  - Prop. 3 for inexact solves: with no row overlapping at q^n, a solve stopped at the default
 //    tol never returns more kinetic energy than u_free has, from any start (garbage warm
 //    starts included), for every iterative solver;
 //  - small steps: at rest under gravity the velocity error is tol relative to g h, not
 //    tol size / h (the chain of failure (C) of doc/stability.md), so a column of spheres
 //    stays at rest to L tol g h.
+#include "laws/law_list.h"
 #include "residual.h"
 #include "solver.h"
 
@@ -43,11 +45,12 @@ TEST(RowScale, FreeSpeedScaleIsTheFastestNormalApproach)
 }
 
 // `speed contact` (ContactProblem::contact_speed_scale) with friction: Coulomb's law
-// constrains the slip as well as the approach, so V is the fastest relative motion of the
-// contact points (a moving wall's tangential velocity included); a sphere rolling without slip
-// adds nothing, and at rest under gravity V is still g h (only the walls feel the common kick).
-// Without the setting V is the approach, friction or not.
-TEST(RowScale, FreeSpeedScaleWithFrictionIsTheContactPointsSpeed)
+// constrains the slip as well as the approach, so the slip conditions are measured against the
+// fastest relative motion of the contact points V_t (a moving wall's tangential velocity
+// included); a sphere rolling without slip adds nothing, and at rest under gravity V_t is still
+// g h (only the walls feel the common kick). V, the gap conditions' speed, stays the approach
+// with or without the setting.
+TEST(RowScale, ContactSpeedScaleIsTheContactPointsSpeed)
 {
   SerialOps ops;
   auto p = hctest::make_problem(0.1, {1.0, 1.0, 1.0}, std::vector<Vec3>(3, Vec3::Zero()));
@@ -55,29 +58,75 @@ TEST(RowScale, FreeSpeedScaleWithFrictionIsTheContactPointsSpeed)
   hctest::add_wall(p, 2, Vec3(0, 0, 0.5), 0.5, Vec3(0, 0, 0), Vec3(0, 0, 1));
   hctest::add_friction(p, {0.5, 0.5, 0.5}, 0.5);
   const int n = 3;
-  auto speed = [&](const std::vector<Vec3> &v, const std::vector<Vec3> &w) {
+  auto set = [&](const std::vector<Vec3> &v, const std::vector<Vec3> &w) {
     for (int b = 0; b < n; ++b) {
       p.u_free[b] = v[b];
       p.u_free[n + b] = w[b];
     }
-    return free_speed_scale(p, ops);
+  };
+  auto slip = [&](const std::vector<Vec3> &v, const std::vector<Vec3> &w) {
+    set(v, w);
+    return contact_speed_scale(p, ops);
   };
   const std::vector<Vec3> still(3, Vec3::Zero());
-  // the pair approaches at 3 and slides at 5: |(-3, 5, 0)|, not 3
-  EXPECT_DOUBLE_EQ(speed({Vec3(1, 0, 0), Vec3(-2, 5, 0), Vec3::Zero()}, still), 3.0);
+  // the pair approaches at 3 and slides at 5: V = 3 (with the setting too), V_t = |(-3, 5, 0)|
+  set({Vec3(1, 0, 0), Vec3(-2, 5, 0), Vec3::Zero()}, still);
+  EXPECT_DOUBLE_EQ(free_speed_scale(p, ops), 3.0);
   p.contact_speed_scale = true;
-  EXPECT_DOUBLE_EQ(speed({Vec3(1, 0, 0), Vec3(-2, 5, 0), Vec3::Zero()}, still), std::sqrt(34.0));
+  EXPECT_DOUBLE_EQ(free_speed_scale(p, ops), 3.0);
+  EXPECT_DOUBLE_EQ(slip({Vec3(1, 0, 0), Vec3(-2, 5, 0), Vec3::Zero()}, still), std::sqrt(34.0));
   // sphere 2 rolls at 3 on the floor (spin 6 about y, r 0.5): its contact point is still
   const std::vector<Vec3> rolling = {Vec3::Zero(), Vec3::Zero(), Vec3(3, 0, 0)};
-  EXPECT_DOUBLE_EQ(speed(rolling, {Vec3::Zero(), Vec3::Zero(), Vec3(0, 6, 0)}), 0.0);
-  EXPECT_DOUBLE_EQ(speed(rolling, still), 3.0);    // the same sphere sliding
-  // at rest under gravity: every sphere kicked by -g h alike
+  EXPECT_DOUBLE_EQ(slip(rolling, {Vec3::Zero(), Vec3::Zero(), Vec3(0, 6, 0)}), 0.0);
+  EXPECT_DOUBLE_EQ(slip(rolling, still), 3.0);    // the same sphere sliding
+  // at rest under gravity: every sphere kicked by -g h alike, V_t = V = g h
   const double gh = 0.01;
-  EXPECT_DOUBLE_EQ(speed(std::vector<Vec3>(3, Vec3(0, 0, -gh)), still), gh);
+  EXPECT_DOUBLE_EQ(slip(std::vector<Vec3>(3, Vec3(0, 0, -gh)), still), gh);
+  EXPECT_DOUBLE_EQ(free_speed_scale(p, ops), gh);
   // a belt under sphere 2 moving at 7 along y (its own normal speed would be in the target)
   p.wall_velocity.assign(p.n_contacts(), Vec3::Zero());
   p.wall_velocity[1] = Vec3(0, 7, 0.25);
-  EXPECT_DOUBLE_EQ(speed(still, still), 7.0);
+  EXPECT_DOUBLE_EQ(slip(still, still), 7.0);
+}
+
+// A frictional row's violation with two scales (laws/disc_law.h): the gap conditions (g_n and
+// the cone's normal condition, the shift included) in units of scale, the slip conditions in
+// units of slip_scale. Coulomb, mu 0.5; g = (shifted gap, h v_t1, h v_t2).
+TEST(RowScale, SlipConditionsTakeTheSlipScaleGapConditionsTheirOwn)
+{
+  Coefficients k;
+  k.friction = 0.5;
+  const double scale = 1e-3, slip_scale = 0.1;
+  double shift = 0.0;
+  // a slide on the cone's edge (force along -t1) whose slip is 0.01 off its force's line: the
+  // direction condition |g_t + |g_t| p| ~ 0.01, the shifted normal condition met exactly
+  {
+    const double m[3] = {1.0, -0.5, 0.0};
+    const double gt = std::hypot(0.1, 0.01);
+    const double g[3] = {0.5 * gt, 0.1, 0.01};
+    const double d = std::hypot(0.1 - gt, 0.01);
+    EXPECT_NEAR(CoulombLaw::violation(g, m, k, scale, slip_scale, shift, -1.0), d / slip_scale,
+                1e-12);
+    EXPECT_DOUBLE_EQ(shift, 0.5 * gt);
+    // one scale for both: the same as the four-argument form
+    EXPECT_DOUBLE_EQ(CoulombLaw::violation(g, m, k, scale, scale, shift, -1.0),
+                     CoulombLaw::violation(g, m, k, scale));
+    EXPECT_NEAR(CoulombLaw::violation(g, m, k, scale), d / scale, 1e-9);
+  }
+  // a stick deep inside its cone (no tangential force) that slips by 0.01: its slip condition
+  // is 0.1 of slip_scale, but the shift lifts its normal condition by mu |g_t| = 0.005, which
+  // the gap's scale holds: 5
+  {
+    const double m[3] = {1.0, 0.0, 0.0};
+    const double g[3] = {0.005, 0.01, 0.0};
+    EXPECT_NEAR(CoulombLaw::violation(g, m, k, scale, slip_scale, shift, -1.0), 5.0, 1e-12);
+  }
+  // no force: the dual cone's condition g_n >= mu |g_t| is a gap condition
+  {
+    const double m[3] = {0.0, 0.0, 0.0};
+    const double g[3] = {0.0, 0.02, 0.0};
+    EXPECT_NEAR(CoulombLaw::violation(g, m, k, scale, slip_scale, shift, -1.0), 10.0, 1e-12);
+  }
 }
 
 class EnergyOfInexactSolves : public ::testing::TestWithParam<std::string> {

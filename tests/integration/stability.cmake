@@ -93,7 +93,7 @@ endif()
 # the floor sliding in its own plane (conveyor, a wall-driven rigid bed) or sliding to rest
 # (slide); Coulomb's deceleration, the exact momentum balance with the floor's forces, then at
 # rest in the floor's frame with a handful of iterations per step; a sphere of 1000 x the mass
-# resting on such a bed (heavy); the slide under `speed contact`, held to what tol allows
+# resting on such a bed (heavy); the slide under `speed contact`, held to the slide's checks
 # (slide_contact_speed); 1 and 2 ranks
 foreach(_case conveyor slide heavy slide_contact_speed)
   hardcontact_deck_test(NAME stab_friction_${_case} HOSTS launcher

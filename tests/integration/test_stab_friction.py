@@ -11,13 +11,14 @@ region `plane` under g = 1; friction 0.8 between spheres, 0.3 on the floor (the 
   the floor.
 --case slide (a bed sliding to rest): the bed starts at V = 1 on the fixed floor; it stops at
   t = V / (mu_w g) = 3.33 with P_x = M (V - mu_w g t).
---case slide_contact_speed: the slide under `speed contact` (the stopping test's V is the
-  contact points' fastest motion, slides included: core/residual.h). While the bed slides
-  V is its slide speed, so the bed's inner contacts are solved to tol V instead of tol g h,
-  and it comes to rest agitated at the tolerance's level: its rest checks are the heavy
-  case's bounds (below), which is what the option costs. Measured 2026-12-07: speeds 1.8e-4,
-  spins r 3.3e-4, creep 2.2e-3 d, 7 iterations per step at rest, against 4e-5 d and 0.8 with
-  the default `speed approach` (the slide case).
+--case slide_contact_speed: the slide under `speed contact` (the slip conditions measured
+  against the contact points' fastest motion, the gap conditions against the approach:
+  core/residual.h, contact_speed_scale). While the bed slides its floor contacts' direction
+  is solved to tol of the slide speed; its inner contacts stick, and their slip stays held by
+  the gap's scale through the shift, so the bed keeps its contacts and must meet the slide
+  case's checks. The option's first form (one scale from the slides for every condition)
+  failed them: the bed opened its inner contacts while sliding (500-555 pushing at rest
+  against 620-630) and crept 2.2e-3 d at rest.
 --case heavy (a mass ratio of 1000 on a frictional bed): the bed at rest on the fixed floor
   and, in a hollow of its top layer, one sphere of the same size and 1000 x the density; it
   must rest there, the bed under it held by friction. At tol 1e-2 the solves leave velocity
@@ -106,9 +107,9 @@ def scene(case, data, keywords="", dumps=True):
 
 
 def run_case(args, label, checks):
-    # slide_contact_speed: the slide under `speed contact`, held to what tol allows (docstring)
+    # slide_contact_speed: the slide under `speed contact`, held to the slide's checks (docstring)
     case, keywords = ("slide", "speed contact") if label == "slide_contact_speed" else (label, "")
-    within_tol = label in ("heavy", "slide_contact_speed")
+    within_tol = label == "heavy"
     wd = lr.fresh_workdir("%s/%s" % (args.workdir, label))
     data = wd.parent / ("bed_%s.data" % case)
     text, n, side, floor_speed = scene(case, data, keywords)
@@ -160,8 +161,7 @@ def run_case(args, label, checks):
     # the kinetic energy relative to the floor: sum m |v - V_floor|^2 / 2
     ke_rel = th["c_ke"] - P[:, 0] * floor_speed + 0.5 * M * floor_speed ** 2
     worst_ke = float(ke_rel[rest].max()) / (n * mass * G * 2 * R)
-    # the heavy and slide_contact_speed cases: speeds and moves within what tol allows (the
-    # docstring)
+    # the heavy case: speeds and moves within what tol allows (the docstring)
     speed_bound = 4.0 * TOL * G * H if within_tol else 1e-3 * V
     move_bound = 2.0 * TOL * G * H * T_REST if within_tol else 1e-3 * 2 * R
     if case != "heavy":

@@ -309,7 +309,7 @@ struct DiscLaw {
   static double violation(const double *g, const double *m, const Coefficients &k, double scale)
   {
     double unused;
-    return violation(g, m, k, scale, unused, -1.0);
+    return violation(g, m, k, scale, scale, unused, -1.0);
   }
   // The same for a largest violation over rows: a row at most floor may return floor instead
   // (most rows of a solve are far below the largest, and a bound without the norms of p_q and
@@ -317,8 +317,10 @@ struct DiscLaw {
   // |d_q| <= |g_q| (1 + |p_q|); the margin covers the round-off of either side, so the largest
   // is the same to the bit). Also gives shift(g, k) from the same norms: the solver needs both
   // every iteration (IterativeSolver::law_shift_).
+  // scale: the gap conditions' (g_n, d_n); slip_scale: the discs' (d_q), residual.h
+  // (contact_speed_scale).
   static double violation(const double *g, const double *m, const Coefficients &k, double scale,
-                          double &shift, double floor)
+                          double slip_scale, double &shift, double floor)
   {
     double coef[discs], gl[discs];
     #pragma GCC unroll 4
@@ -348,7 +350,7 @@ struct DiscLaw {
       bn += coef[q] * gl[q] * a;
       bt = std::max(bt, gl[q] + gl[q] * a);
     }
-    if (std::max(bn, bt) / scale * (1.0 + 1e-12) <= floor) return floor;
+    if (std::max(bn / scale, bt / slip_scale) * (1.0 + 1e-12) <= floor) return floor;
     double dn = g[0], worst = 0.0;
     #pragma GCC unroll 4
     for (int q = 0; q < discs; ++q) {
@@ -361,8 +363,9 @@ struct DiscLaw {
       const double d = length(r, size_of[q]);
       worst = worst > d ? worst : d;
     }
-    dn = std::abs(dn);
-    return (dn > worst ? dn : worst) / scale;
+    dn = std::abs(dn) / scale;
+    worst /= slip_scale;
+    return dn > worst ? dn : worst;
   }
 
   static double shift(const double *g, const Coefficients &k)

@@ -7,8 +7,9 @@
 //   project(m, k)           the nearest admissible block m[0..block) (the projection of the
 //                           dual method, section 3.3), k: the row's coefficients
 //   violation(g, m, k, s)   how far (g, m) is from complementarity, in units of the row scale s
-//   violation(g, m, k, s, shift, floor)   (friction) the same for a largest one over rows:
-//                           floor for a row shown to be at most floor; also shift(g, k)
+//   violation(g, m, k, s, st, shift, floor)   (friction) the same for a largest one over
+//                           rows, its slip conditions in units of st: floor for a row shown
+//                           to be at most floor; also shift(g, k)
 //   shift(g, k)             the normal target shift that removes the convex relaxation's
 //                           lift-off at the fixed point (De Saxce), 0 for the normal law
 //   local_solve(m, g, d, k) the law of one contact solved with the others held, from its
