@@ -409,8 +409,9 @@ const Keyword after_effects[] = {
      "(exact), or none (convex: Anitescu and Tasora's relaxation, sliding contacts lift off at "
      "mu |slip|)"},
     {"speed", 1, 0, parse_speed,
-     "speed approach|contact: the speed V of the stopping test's scale h V, the contact points' "
-     "fastest approach (the default) or, with friction, their fastest motion, slides included"},
+     "speed approach|contact: the stopping test's scales h V, V the contact points' fastest "
+     "approach (the default), or with friction the slip conditions' from their fastest motion, "
+     "slides included"},
     // rolling, twisting, ...: a row per resistance
     HARDCONTACT_RESISTANCES(HARDCONTACT_RESISTANCE_ROW)
     {"disc", 0, 0, parse_disc, "disc: 2d discs, moment of inertia 1/2 m r^2"},
