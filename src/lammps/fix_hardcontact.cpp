@@ -53,6 +53,8 @@ hardcontact::FixOptions checked_options(LAMMPS *lmp, int narg, char **arg)
   // rearranging packing (its contact forces are indeterminate), and the scenes' observables
   // (a pile's height, a heap's and a drum's angle) are the same at 1e-2 as at 1e-4
   if (!o.tol_given && o.has_friction()) o.settings.tol = hardcontact::FixOptions::kFrictionTol;
+  // The default speeds with friction (keywords.h): the slip conditions against the slides
+  if (!o.speed_given && o.has_friction()) o.settings.contact_speed = true;
   if (o.has_friction()) {
     if (!lmp->atom->omega_flag || !lmp->atom->torque_flag)
       lmp->error->all(FLERR, "Fix hardcontact friction requires atom attributes omega and "

@@ -184,9 +184,11 @@ void parse_speed(LAMMPS *lmp, char **values, int, FixOptions &o)
   const std::string value = values[0];
   if (value != "approach" && value != "contact")
     compat::error_all(lmp->error, FLERR,
-                      "Fix hardcontact speed must be approach (the default) or contact, got '{}'",
+                      "Fix hardcontact speed must be approach or contact (the default with "
+                      "friction), got '{}'",
                       value);
   o.settings.contact_speed = value == "contact";
+  o.speed_given = true;
 }
 
 void parse_wall(LAMMPS *lmp, char **values, int n, FixOptions &o)
@@ -410,7 +412,7 @@ const Keyword after_effects[] = {
      "mu |slip|)"},
     {"speed", 1, 0, parse_speed,
      "speed approach|contact: the stopping test's scales h V, V the contact points' fastest "
-     "approach (the default), or with friction the slip conditions' from their fastest motion, "
+     "approach, or with friction (its default) the slip conditions' from their fastest motion, "
      "slides included"},
     // rolling, twisting, ...: a row per resistance
     HARDCONTACT_RESISTANCES(HARDCONTACT_RESISTANCE_ROW)
@@ -456,6 +458,7 @@ FixOptions parse_keywords(LAMMPS *lmp, int narg, char **arg, int first)
   FixOptions options;
   bool pair_friction = false;    // a 'friction' keyword of its own (not a wall's)
   std::vector<std::unique_ptr<Effect>> made(effect_kinds().size());    // by kind
+  std::vector<std::string> given(effect_kinds().size());    // by kind: its keywords written
   int iarg = first;
   while (iarg < narg) {
     const Keyword *found = nullptr;
@@ -493,6 +496,10 @@ FixOptions parse_keywords(LAMMPS *lmp, int narg, char **arg, int first)
     if (found->effect_row) {    // the effect's object, made at its first keyword
       std::unique_ptr<Effect> &effect = made[found->effect];
       if (!effect) effect = effect_kinds()[found->effect].create(lmp);
+      // the keywords that only shape the effect (bounce), not the one that turns it on
+      std::string &names = given[found->effect];
+      if (strcmp(found->name, effect_kinds()[found->effect].keywords[0].name) != 0)
+        names += (names.empty() ? "" : ", ") + std::string(found->name);
       found->effect_row->parse(lmp, arg + iarg + 1, n, *effect);
     } else {
       found->parse(lmp, arg + iarg + 1, n, options);
@@ -523,10 +530,21 @@ FixOptions parse_keywords(LAMMPS *lmp, int narg, char **arg, int first)
     }
   }
   // the effects asked for, in the table's order; an effect whose keywords ask for nothing
-  // (bounce without restitution) is dropped
-  for (size_t e = 0; e < made.size(); ++e)
-    if (made[e] && made[e]->present())
+  // (bounce without restitution, or with restitution 0) is dropped, and a deck that shaped it
+  // (bounce) told: that keyword was written for something which does not happen. 'restitution
+  // 0' alone says what the default says: nothing to tell.
+  for (size_t e = 0; e < made.size(); ++e) {
+    if (!made[e]) continue;
+    if (made[e]->present()) {
       options.effects.push_back({&effect_kinds()[e], std::move(made[e])});
+    } else if (!given[e].empty() && lmp->comm->me == 0) {
+      const EffectKind &kind = effect_kinds()[e];
+      compat::warning(lmp->error, FLERR,
+                      "Fix hardcontact: no {} is above 0, so '{}' does nothing: give {} a "
+                      "value above 0 or remove '{}'",
+                      kind.name, given[e], kind.name, given[e]);
+    }
+  }
   // A deck written before walls had their own coefficient ('wall zplane 0 NULL friction 0.5')
   // meant friction everywhere: say what it means now.
   if (options.has_wall_friction() && !pair_friction && lmp->comm->me == 0)

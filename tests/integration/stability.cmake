@@ -93,9 +93,9 @@ endif()
 # the floor sliding in its own plane (conveyor, a wall-driven rigid bed) or sliding to rest
 # (slide); Coulomb's deceleration, the exact momentum balance with the floor's forces, then at
 # rest in the floor's frame with a handful of iterations per step; a sphere of 1000 x the mass
-# resting on such a bed (heavy); the slide under `speed contact`, held to the slide's checks
-# (slide_contact_speed); 1 and 2 ranks
-foreach(_case conveyor slide heavy slide_contact_speed)
+# resting on such a bed (heavy); the slide under `speed approach` (the default with friction
+# is `speed contact`), held to the slide's checks (slide_speed_approach); 1 and 2 ranks
+foreach(_case conveyor slide heavy slide_speed_approach)
   hardcontact_deck_test(NAME stab_friction_${_case} HOSTS launcher
     SCRIPT integration/test_stab_friction.py NP 1 2 LABELS stability
     ARGS --case ${_case} --timeout 200 TIMEOUT 300)

@@ -13,6 +13,8 @@ soft deck leaves behind beside fix hardcontact. Each deck runs; checked are its 
                hosts; LIGGGHTS has no region walls)
   other_group  fix nve/sphere on a group disjoint from the fix's: no WARNING, no ERROR, and
                the nve atom moves as nve/sphere says (x = x0 + v t)
+  bounce_alone `bounce` without restitution: one WARNING that it does nothing (with
+               `restitution 0.5`, or `restitution 0` alone: none)
   clean        the converted deck: no WARNING of the fix
 Every deck has two runs: each warning comes once (the first run's init), not per run.
 The ERROR for a second integrator on the same atoms is a case of test_errors.py
@@ -120,6 +122,16 @@ def test():
     lr.check(not w and abs(x4 - (4.5 + 0.5 * 0.1)) < 1e-12,
              "other_group: fix nve/sphere on the loner only: no WARNING, x4 = 4.55 after 10 steps "
              "of 0.01 at 0.5 (%.15g): %s" % (x4, w))
+
+    # an effect's shaping keyword without the effect: bounce without restitution does nothing
+    _, w = run(args, "bounce_alone", deck(host, fix="wall zplane 0 NULL bounce 0.05"))
+    lr.check(len(w) == 1 and "no restitution is above 0, so 'bounce' does nothing" in w[0],
+             "bounce_alone: one WARNING that 'bounce' does nothing without restitution: %s" % w)
+    _, w = run(args, "bounce_restitution", deck(
+        host, fix="wall zplane 0 NULL restitution 0.5 bounce 0.05"))
+    lr.check(not w, "bounce with restitution 0.5: no WARNING: %s" % w)
+    _, w = run(args, "restitution_zero", deck(host, fix="wall zplane 0 NULL restitution 0"))
+    lr.check(not w, "restitution 0 alone (the default's value): no WARNING: %s" % w)
 
     # the converted deck
     _, w = run(args, "clean", deck(host))

@@ -203,7 +203,7 @@ CASES = [
          ["cone applies with friction only", "remove cone or add friction"], np4=True),
     # speed
     case("speed_unknown", deck("friction 0.5 speed slip"),
-         ["speed must be approach (the default) or contact", "'slip'"]),
+         ["speed must be approach or contact (the default with friction)", "'slip'"]),
     case("speed_contact_no_friction", deck("speed contact"),
          ["speed contact applies with friction only", "remove speed or add friction"]),
     case("subspace_friction", deck("friction 0.5 subspace 10"),

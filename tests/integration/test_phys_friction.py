@@ -219,13 +219,14 @@ def cones(args):
     mu times its slip, so with x the normal impulse per unit mass, -g h + x = mu (v0 - 7/2 mu x)
     (the slip loses mu x and the spin's r 5/2 mu x): x = (mu v0 + g h) / (1 + 7/2 mu^2), and the
     sphere leaves the floor at mu (v0 - 7/2 mu x) = 0.454 - the artefact De Saxce's shift
-    removes. `speed contact` (the stopping test's scale from the contact points' slide too)
+    removes. `speed approach` (every condition of the stopping test against the approach; the
+    default with friction, `speed contact`, measures the slip conditions against the slides)
     changes where a solve stops, not its answer: the default cone's values again."""
     mu, v0, g = 0.3, 2.0, 1.0
     x = (mu * v0 + g * H) / (1.0 + 3.5 * mu * mu)
     want = {"exact": (v0 - mu * g * H, 0.0), "lagged": (v0 - mu * g * H, 0.0),
             "convex": (v0 - mu * x, mu * (v0 - 3.5 * mu * x)),
-            "lagged speed contact": (v0 - mu * g * H, 0.0)}
+            "lagged speed approach": (v0 - mu * g * H, 0.0)}
     for cone, (vx, vz) in want.items():
         _, _, th = incline(args, "cone_" + cone.replace(" ", "_"), 0.0,
                            "friction %g cone %s tol 1e-10" % (mu, cone), n=1, v0=v0, flat=True)

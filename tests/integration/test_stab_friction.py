@@ -11,14 +11,16 @@ region `plane` under g = 1; friction 0.8 between spheres, 0.3 on the floor (the 
   the floor.
 --case slide (a bed sliding to rest): the bed starts at V = 1 on the fixed floor; it stops at
   t = V / (mu_w g) = 3.33 with P_x = M (V - mu_w g t).
---case slide_contact_speed: the slide under `speed contact` (the slip conditions measured
-  against the contact points' fastest motion, the gap conditions against the approach:
-  core/residual.h, contact_speed_scale). While the bed slides its floor contacts' direction
+  The fix's default with friction is `speed contact` (the slip conditions measured against
+  the contact points' fastest motion, the gap conditions against the approach:
+  core/residual.h, contact_speed_scale): while the bed slides its floor contacts' direction
   is solved to tol of the slide speed; its inner contacts stick, and their slip stays held by
-  the gap's scale through the shift, so the bed keeps its contacts and must meet the slide
-  case's checks. The option's first form (one scale from the slides for every condition)
-  failed them: the bed opened its inner contacts while sliding (500-555 pushing at rest
-  against 620-630) and crept 2.2e-3 d at rest.
+  the gap's scale through the shift, so the bed keeps its contacts. The option's first form
+  (one scale from the slides for every condition) failed the slide's checks: the bed opened
+  its inner contacts while sliding (500-555 pushing at rest against 620-630) and crept
+  2.2e-3 d at rest.
+--case slide_speed_approach: the slide under `speed approach` (every condition against the
+  approach, the default before 2026-12-07), held to the same checks.
 --case heavy (a mass ratio of 1000 on a frictional bed): the bed at rest on the fixed floor
   and, in a hollow of its top layer, one sphere of the same size and 1000 x the density; it
   must rest there, the bed under it held by friction. At tol 1e-2 the solves leave velocity
@@ -107,8 +109,8 @@ def scene(case, data, keywords="", dumps=True):
 
 
 def run_case(args, label, checks):
-    # slide_contact_speed: the slide under `speed contact`, held to the slide's checks (docstring)
-    case, keywords = ("slide", "speed contact") if label == "slide_contact_speed" else (label, "")
+    # slide_speed_approach: the slide under `speed approach`, held to the slide's checks
+    case, keywords = ("slide", "speed approach") if label == "slide_speed_approach" else (label, "")
     within_tol = label == "heavy"
     wd = lr.fresh_workdir("%s/%s" % (args.workdir, label))
     data = wd.parent / ("bed_%s.data" % case)
