@@ -42,19 +42,21 @@ double free_speed_scale(const ContactProblem &p, DistributedOps &ops);
 // target, so only its tangential part counts, as in the slip). With p.contact_speed_scale
 // (the fix's `speed contact`) the slip conditions of the frictional laws - a sticking disc's
 // slip, a sliding disc's direction against its force - are measured against h max(V, V_t)
-// instead of h V (WorkingSet, tangential scales; laws/disc_law.h, violation).
+// instead of h V (WorkingSet's slip scales; laws/disc_law.h, violation). The fix's default
+// with friction since 2026-12-07.
 //
 // Why: Coulomb's law constrains the slip as well as the approach, and in a packing that
 // rearranges spheres slide past one another far faster than they approach, so the approach
 // alone asks for slip directions right to a few 1e-4 of the slides. A sphere that rolls
 // without slip adds nothing (its contact point does not move), and at rest V_t is V = g h
 // (gravity moves every body alike: only wall rows feel it), so a resting packing is solved as
-// by default. The gap conditions keep h V: measured against h V_t as well (the option's first
-// form, one scale for every condition), a bed sliding on a floor opened its inner contacts by
-// up to tol h V_t per step, lost 100-160 of its 740 contact rows to that dilation and came to
-// rest agitated (16 iterations per step, creep 50 x the default's); with the gap conditions
-// at h V it keeps its contacts (727) and rests as quietly as by default (1.0 iteration per
-// step) after a third of the default's iterations (bench/friction/README.md, "Two scales").
+// under the approach alone. The gap conditions keep h V: measured against h V_t as well (the
+// option's first form, one scale for every condition), a bed sliding on a floor opened its
+// inner contacts by up to tol h V_t per step, lost 100-160 of its 740 contact rows to that
+// dilation and came to rest agitated (16 iterations per step, creep 50 x the approach's); with
+// the gap conditions at h V it keeps its contacts (727) and rests as quietly as under the
+// approach (1.0 iteration per step) after a third of its iterations (bench/friction/README.md,
+// "Two scales").
 // The normal condition of a sticking contact holds mu |slip| (1 - |m_t| / (mu m_n)) (the
 // shift's lift), so a stick well inside its cone is still held to h V in its slip; a slide
 // on its cone's edge is held to h V_t in its direction.

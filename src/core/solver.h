@@ -34,8 +34,9 @@ struct SolverSettings {
   Cone cone = Cone::Lagged;
   // Friction: the slip conditions of the stopping test are measured against h max(V, V_t), V_t
   // the fastest motion of the contact points, slides included; the gap conditions keep h V, V
-  // the fastest approach (residual.h, contact_speed_scale). Default: h V for both. The host
-  // passes it on in ContactProblem::contact_speed_scale.
+  // the fastest approach (residual.h, contact_speed_scale). Unset: h V for both (the fix sets it
+  // by default with friction: src/lammps/keywords.h). The host passes it on in
+  // ContactProblem::contact_speed_scale.
   bool contact_speed = false;
   // Developers: when set, an iterative solver of the frictionless law writes the problem it
   // receives to this file before it starts (problem_dump.h); empty = nothing written.
