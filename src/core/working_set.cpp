@@ -10,16 +10,18 @@ void WorkingSet<Law>::init(const ContactProblem &p, const std::vector<double> &m
 {
   const int nc = p.n_contacts();
   speed_scale_ = row_scales(p, tol, ops, scale_);
-  // the slip conditions' scales (residual.h, contact_speed_scale): h max(V, V_t) with
-  // `speed contact`, else the gap conditions' own. A condition every process shares (V_t is a
-  // reduction): not p.rotates(), false on a process that holds no sphere.
-  if (Law::block > 1 && p.contact_speed_scale) {
-    const double v = std::max(speed_scale_, contact_speed_scale(p, ops));
-    slip_scale_.resize(nc);
-    for (int c = 0; c < nc; ++c)
-      slip_scale_[c] = row_scale(p.size[c], p.h, v, tol, p.gap_roundoff);
-  } else {
-    slip_scale_ = scale_;
+  // friction: the slip conditions' scales (residual.h, contact_speed_scale), h max(V, V_t)
+  // with `speed contact`, else the gap conditions' own. A condition every process shares (V_t
+  // is a reduction): not p.rotates(), false on a process that holds no sphere.
+  if constexpr (Law::block > 1) {
+    if (p.contact_speed_scale) {
+      const double v = std::max(speed_scale_, contact_speed_scale(p, ops));
+      slip_scale_.resize(nc);
+      for (int c = 0; c < nc; ++c)
+        slip_scale_[c] = row_scale(p.size[c], p.h, v, tol, p.gap_roundoff);
+    } else {
+      slip_scale_ = scale_;
+    }
   }
   rows_.clear();
   member_.assign(nc, 0);

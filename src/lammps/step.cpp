@@ -44,9 +44,6 @@ StepResult ContactStep::solve(Solver &solver, const SolverSettings &settings,
   sink.set_moving(moving_obstacles);
   sink.begin_candidates(1.0);
   offer_rows(bodies, sink);
-  // with friction the frames of the first rows (the working set's slip scales read them,
-  // core/residual.h, contact_speed_scale)
-  if (law_.friction) problem_.complete_frames(0);
   problem_.contact_speed_scale = settings.contact_speed;
   const double speed_scale = free_speed_scale(problem_, ops_);    // V (core/residual.h)
   Targets targets{bodies.recovery_speed, speed_scale, settings.tol};
@@ -82,7 +79,7 @@ StepResult ContactStep::solve(Solver &solver, const SolverSettings &settings,
       for (int r = 0; r < kResistances; ++r)
         if (law_.resistance[r])
           effect_step.pair_values(*law_.resistance[r], targeted, problem_.resistance[r]);
-      if (targeted > 0) problem_.complete_frames(targeted);    // the first rows' are made above
+      problem_.complete_frames(targeted);
     }
     // Warm start: each row starts from the multiplier its pair had at the last step, if any
     // (after the frames, which its tangential parts are projected on; before the targets,
