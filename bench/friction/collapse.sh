@@ -12,12 +12,15 @@
 # Writes friction_collapse.csv into bench/results/friction/<host>/ (bench/common.sh).
 #   bench/friction/collapse.sh [--quick]     (--quick: a column of 14 layers of L0 = 6, one
 #                                              seed, no tol 1e-4)
+#   COLLAPSE_TIGHT=no bench/friction/collapse.sh: the full columns without the tol 1e-4 run
+#   (about 40 minutes of the suite's 45)
 set -euo pipefail
 # shellcheck source=../common.sh
 source "$(dirname "${BASH_SOURCE[0]}")/../common.sh" friction_collapse_ "$@"
 EX="$ROOT/examples/column_collapse"
 SEEDS=(4767548 1234567 7654321); SIZE=(); TIGHT=yes
 [ "$MODE" = quick ] && { SEEDS=(4767548); SIZE=(-var nz 14 -var L0 6 -var tsettle 15 -var tend 30); TIGHT=no; }
+TIGHT="${COLLAPSE_TIGHT:-$TIGHT}"
 CSV="$RESULTS/friction_collapse.csv"
 [ "$MODE" = quick ] && CSV="$RESULTS/friction_collapse_quick.csv"
 echo "scene,run,seed,a,runout,H_inf_over_L0,strays,loop_s,steps,it_mean,overlap_max,maxiter_stops,load1" > "$CSV"
