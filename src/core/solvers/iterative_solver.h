@@ -84,7 +84,7 @@ class IterativeSolver : public Solver {
         // the residual and the drift (which reads the law_shift_ set_residual leaves) in one
         // reduction
         double worst[2] = {set_residual(mu, u), 0.0};
-        worst[1] = cone_ == SolverSettings::Cone::Convex ? 0.0 : local_shift_drift();
+        worst[1] = cone_ == SolverSettings::Cone::Convex ? 0.0 : set_drift();
         ops.sum_max_all(worst, 0, 2);
         report.residual = worst[0];
         drift = worst[1];
@@ -201,6 +201,10 @@ class IterativeSolver : public Solver {
     }
     return r;
   }
+  // Friction: this process's largest drift of the shifts from the values they move to (read
+  // right after set_residual(), whose law_shift_ it reads). A solver whose shifts are by
+  // construction its iterate's own says 0.
+  virtual double set_drift() { return local_shift_drift(); }
   // The largest violation over the working set on every process (the stopping test's), at
   // (mu, u), without friction (with friction solve() reduces it with the shifts' drift). A
   // solver that reduces it together with its own sums overrides this.
