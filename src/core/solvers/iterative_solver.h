@@ -54,7 +54,7 @@ class IterativeSolver : public Solver {
       // value there: from mu, in start_shifts' pass, or from lag_from()'s warm start when mu
       // is not it (one more product)
       cap_.assign(nc, std::numeric_limits<double>::infinity());
-      const bool lagged = cone_ == SolverSettings::Cone::Lagged;
+      const bool lagged = cone_ == SolverSettings::Cone::Lagged && moves_shifts();
       if (lagged && given_warm_) {    // the warm start as this solve's mu was made from it
         warm_.resize(static_cast<size_t>(B) * nc, 0.0);
         for (int c = 0; c < nc; ++c) Law::project(&warm_[static_cast<size_t>(B) * c], coef(p, c));
@@ -66,7 +66,7 @@ class IterativeSolver : public Solver {
           cap_[c] = Law::shift(g, coef(c));
         }
       }
-      start_shifts(mu, u, lagged && !given_warm_);
+      if (moves_shifts()) start_shifts(mu, u, lagged && !given_warm_);
       given_warm_ = false;
       best_drift_ = 1e300;
       stalled_ = 0;
@@ -84,7 +84,7 @@ class IterativeSolver : public Solver {
         // the residual and the drift (which reads the law_shift_ set_residual leaves) in one
         // reduction
         double worst[2] = {set_residual(mu, u), 0.0};
-        worst[1] = cone_ == SolverSettings::Cone::Convex ? 0.0 : set_drift();
+        worst[1] = cone_ == SolverSettings::Cone::Convex || !moves_shifts() ? 0.0 : local_shift_drift();
         ops.sum_max_all(worst, 0, 2);
         report.residual = worst[0];
         drift = worst[1];
@@ -201,10 +201,10 @@ class IterativeSolver : public Solver {
     }
     return r;
   }
-  // Friction: this process's largest drift of the shifts from the values they move to (read
-  // right after set_residual(), whose law_shift_ it reads). A solver whose shifts are by
-  // construction its iterate's own says 0.
-  virtual double set_drift() { return local_shift_drift(); }
+  // Friction: whether the solver brings De Saxce's shifts to their fixed point (the
+  // projected-gradient solvers: the start shifts, the lagged cone's caps, the drift and the
+  // moves below), or its set_residual() gives each row its iterate's own (no drift, no caps).
+  virtual bool moves_shifts() const { return true; }
   // The largest violation over the working set on every process (the stopping test's), at
   // (mu, u), without friction (with friction solve() reduces it with the shifts' drift). A
   // solver that reduces it together with its own sums overrides this.

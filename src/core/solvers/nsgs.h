@@ -46,14 +46,15 @@ class NsgsSolver : public IterativeSolver<Law> {
   // law itself (laws/coulomb.h: with the shift at its value, the violation is that of g_n = 0
   // for a pushing contact, g_n >= 0 for a free one).
   double set_residual(const std::vector<double> &mu, const std::vector<Vec3> &u) override;
-  // No drift: set_residual() gives each row Law::shift of its iterate, the shift of Coulomb's
-  // law, which the sweeps solve under every cone. The lagged cone's caps (IterativeSolver) are
-  // the projected-gradient solvers' relaxation: measured against them, a row whose slip grew
-  // beyond its cap drifted by 3 tol for ever, every check moved the shifts back instead of
-  // sweeping, and the solve froze with its residual at 3 tol until maxiter (a creeping 8000-
-  // sphere pile: 3000 sweeps at a constant 0.027-0.030 against tol 0.01, against 23-85 once
-  // the sweeps run; bench/friction/README.md, "nsgs froze under the lagged cone").
-  double set_drift() override { return 0.0; }
+  // No fixed point of the shifts: set_residual() gives each row Law::shift of its iterate, the
+  // shift of Coulomb's law, which the sweeps solve under every cone; the start shifts and the
+  // lagged cone's caps (IterativeSolver) are the projected-gradient solvers' relaxation.
+  // Measured against those caps, a row whose slip grew beyond its cap drifted by 3 tol for
+  // ever, every check moved the shifts back instead of sweeping, and the solve froze with its
+  // residual at 3 tol until maxiter (a creeping 8000-sphere pile: 3000 sweeps at a constant
+  // 0.027-0.030 against tol 0.01, against 23-85 once the sweeps run; bench/friction/README.md,
+  // "nsgs froze under the lagged cone").
+  bool moves_shifts() const override { return false; }
 
  private:
   // The row's own gradient without the shift (the local solve needs none).
