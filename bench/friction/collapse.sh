@@ -14,6 +14,8 @@
 #                                              seed, no tol 1e-4)
 #   COLLAPSE_TIGHT=no bench/friction/collapse.sh: the full columns without the tol 1e-4 run
 #   (about 40 minutes of the suite's 45)
+#   COLLAPSE_RUNS="hard hard_hmax0.08 soft_kn6000 soft_kn60000": the runs (each on every seed;
+#   default "hard soft_kn6000 soft_kn60000")
 set -euo pipefail
 # shellcheck source=../common.sh
 source "$(dirname "${BASH_SOURCE[0]}")/../common.sh" friction_collapse_ "$@"
@@ -25,7 +27,8 @@ CSV="$RESULTS/friction_collapse.csv"
 [ "$MODE" = quick ] && CSV="$RESULTS/friction_collapse_quick.csv"
 echo "scene,run,seed,a,runout,H_inf_over_L0,strays,loop_s,steps,it_mean,overlap_max,maxiter_stops,load1" > "$CSV"
 
-# collapse RUN SEED: RUN = hard (defaults), hard_tol1e-4, soft_kn6000, soft_kn60000
+# collapse RUN SEED: RUN = hard (defaults), hard_tol1e-4, hard_hmax0.08 (adaptive steps: fix
+# dt/reset up to h 0.08, the deck's xmax 0.1), soft_kn6000, soft_kn60000
 collapse() {
   local run="$1" seed="$2" d="$WORK/collapse_$1_$2" res loop steps stats
   mkdir -p "$d"
@@ -34,6 +37,8 @@ collapse() {
              -echo none -screen none > /dev/null) ;;
     hard_tol*) (cd "$d" && "$LMP" -in "$EX/in.collapse" -var seed "$seed" -var fix_extra "tol ${run#hard_tol}" \
                   "${SIZE[@]}" -log log.lammps -echo none -screen none > /dev/null) ;;
+    hard_hmax*) (cd "$d" && "$LMP" -in "$EX/in.collapse" -var seed "$seed" -var hmax "${run#hard_hmax}" \
+                   "${SIZE[@]}" -log log.lammps -echo none -screen none > /dev/null) ;;
     soft_kn*) (cd "$d" && "$SOFT_LMP" -in "$EX/in.collapse.soft" -var seed "$seed" -var kn "${run#soft_kn}" \
                  "${SIZE[@]}" -log log.lammps -echo none -screen none > /dev/null) ;;
   esac
@@ -67,7 +72,7 @@ EOF
   echo "collapse,$run,$seed,$res,$loop,$steps,$stats,$(bench_load1)" >> "$CSV"
 }
 
-RUNS=(hard soft_kn6000 soft_kn60000)
+read -r -a RUNS <<< "${COLLAPSE_RUNS:-hard soft_kn6000 soft_kn60000}"
 jobs=()
 for run in "${RUNS[@]}"; do for seed in "${SEEDS[@]}"; do jobs+=("$run $seed"); done; done
 # the tight reference on the first seed only: its settle creeps at 1500-6000 iterations per step

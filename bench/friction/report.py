@@ -7,6 +7,7 @@ loop time (soft twins as squares, the fix's default circled (grey: the default b
 """
 
 import csv
+import math
 import sys
 from pathlib import Path
 
@@ -26,6 +27,27 @@ def load(path):
     return rows
 
 
+def twin_time_at(soft, overlap):
+    """Issue 36's target 2 compares with soft twins at largest overlaps of 1e-2 and 1e-3 of the
+    contact size, interpolated as issue 15 did: the twins' loop time against their sampled
+    largest overlap, linear in log-log between the two twins that bracket `overlap` (beyond
+    them, the nearest two extended: marked extrapolated). None with fewer than two twins."""
+    pts = sorted(((r["overlap_max"], r["loop_s"]) for r in soft if r["overlap_max"] > 0),
+                 reverse=True)
+    if len(pts) < 2:
+        return None, False
+    pair, outside = None, True
+    for a, b in zip(pts, pts[1:]):
+        if b[0] <= overlap <= a[0]:
+            pair, outside = (a, b), False
+            break
+    if pair is None:
+        pair = (pts[0], pts[1]) if overlap > pts[0][0] else (pts[-2], pts[-1])
+    (o1, t1), (o2, t2) = pair
+    p = math.log(t2 / t1) / math.log(o1 / o2)
+    return t1 * (o1 / overlap) ** p, outside
+
+
 def main():
     if len(sys.argv) != 2:
         raise SystemExit(__doc__)
@@ -34,18 +56,28 @@ def main():
     soft = {r["tol"]: r for r in rows if r["kind"] == "soft"}
     hard = [r for r in rows if r["kind"] == "hard"]
     s2, s3 = soft.get(1e-2), soft.get(1e-3)
-    out = ["| run | tol | h | mean height at T | at rest from t | largest overlap (end) | it/step (max) | maxiter stops | loop (s) | / soft 1e-2 | / soft 1e-3 |",
-           "|---|---|---|---|---|---|---|---|---|---|---|"]
+    at = {x: twin_time_at(list(soft.values()), x) for x in (1e-2, 1e-3)}
+    out = ["| run | tol | h | mean height at T | at rest from t | largest overlap (end) | it/step (max) | maxiter stops | loop (s) | / soft 1e-2 | / soft 1e-3 | soft / hard at largest overlaps 1e-2; 1e-3 |",
+           "|---|---|---|---|---|---|---|---|---|---|---|---|"]
     for r in hard + list(soft.values()):
         is_soft = r["kind"] == "soft"
         it = "-" if is_soft else "%.0f (%.0f)" % (r["it_mean"], r["it_max"])
         stops = "-" if is_soft else "%d" % r["maxiter_stops"]
         ratio = lambda s: ("%.2f" % (r["loop_s"] / s["loop_s"])) if s else "-"
         rest = "%.1f" % r["t_rest"] if r["t_rest"] == r["t_rest"] else "not by %.0f" % r["T"]
-        out.append("| %s | %s | %s | %.4f | %s | %.2g (%.2g) | %s | %s | %.1f | %s | %s |" % (
+        target = "-" if is_soft else "; ".join(
+            "-" if t is None else "%.2f%s" % (t / r["loop_s"], " (extrapolated)" if far else "")
+            for t, far in (at[1e-2], at[1e-3]))
+        out.append("| %s | %s | %s | %.4f | %s | %.2g (%.2g) | %s | %s | %.1f | %s | %s | %s |" % (
             r["run"], "%g" % r["tol"] if not is_soft else "static overlap %g" % r["tol"],
             "%.3g" % r["h"], r["zavg"], rest, r["overlap_max"], r["overlap_end"], it, stops,
-            r["loop_s"], ratio(s2), ratio(s3)))
+            r["loop_s"], ratio(s2), ratio(s3), target))
+    for x in (1e-2, 1e-3):
+        t, far = at[x]
+        if t is not None:
+            out.append("")
+            out.append("Twins' loop time at a largest overlap of %g (interpolated%s): %.1f s" % (
+                x, ", extrapolated" if far else "", t))
     md = path.with_suffix(".md")
     md.write_text("\n".join(out) + "\n")
     print("\n".join(out))
