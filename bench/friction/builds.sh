@@ -35,6 +35,10 @@ declare -A KW_OF=([old]="${OLD_KEYWORDS:-}" [new]="${NEW_KEYWORDS:-}")
 declare -A ENV_OF=([old]="${OLD_ENV:-}" [new]="${NEW_ENV:-}")
 lmp_of() { echo "${LMP_OF[$1]}"; }
 kw_of() { echo "${KW_OF[$1]}"; }
+# The drum's and the hopper's decks write `tol ${tol}` after the keywords they are given, so a
+# `tol X` among a build's keywords goes to their tol variable (else the deck's 1e-2 would win).
+tol_of() { sed -n 's/.*\btol \([^ ]*\).*/\1/p' <<< "${KW_OF[$1]}"; }
+kw_but_tol() { sed 's/\btol [^ ]*//' <<< "${KW_OF[$1]}"; }
 # run BUILD COMMAND...: the command with the build's environment and HARDCONTACT_LMP
 run() { local b="$1"; shift; env ${ENV_OF[$b]} HARDCONTACT_LMP="${LMP_OF[$b]}" "$@"; }
 
@@ -64,7 +68,8 @@ settle() {    # settle BUILD SCENE: front.py's default hard run (hybrid, tol 1e-
 }
 drum() {
   local d="$WORK/drum_$1" angle
-  local kw=(); [ -n "$(kw_of "$1")" ] && kw=(-var solver "$(kw_of "$1")")
+  local kw=(); [ -n "$(kw_but_tol "$1" | tr -d ' ')" ] && kw=(-var solver "$(kw_but_tol "$1")")
+  [ -n "$(tol_of "$1")" ] && kw+=(-var tol "$(tol_of "$1")")
   (cd "$EX/drum" && run "$1" bash run.sh "$d" hard "${DRUM[@]}" "${kw[@]}" > "$d.out" 2>&1)
   angle=$("$PY" "$EX/drum/drum_angle.py" "$d/hard/drum.dump" "$d/hard/log.lammps" |
           sed -n 's/.*dynamic angle \([0-9.]*\) +- \([0-9.]*\).*/\1 +- \2/p')
@@ -82,7 +87,9 @@ heap() {    # heap BUILD SEED
 }
 hopper() {
   local d="$WORK/hopper_$1" rate
-  (cd "$EX/hopper3d" && run "$1" bash run.sh "$d" hard 10 -var solver "hybrid $(kw_of "$1")" -var tol 1e-2 > "$d.out" 2>&1)
+  local tol; tol=$(tol_of "$1")
+  (cd "$EX/hopper3d" && run "$1" bash run.sh "$d" hard 10 -var solver "hybrid $(kw_but_tol "$1")" \
+     -var tol "${tol:-1e-2}" > "$d.out" 2>&1)
   rate=$("$PY" "$EX/hopper3d/beverloo3d.py" "$d" 10 2>/dev/null | awk '$1 == "10.0" {print $3; exit}')
   row hopper3d "$1" "" "discharge rate (beads/s) at D 10 mm" "${rate:-nan}" "$d/hard_D10/log.lammps"
 }

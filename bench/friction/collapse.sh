@@ -15,7 +15,8 @@
 #   COLLAPSE_TIGHT=no bench/friction/collapse.sh: the full columns without the tol 1e-4 run
 #   (about 40 minutes of the suite's 45)
 #   COLLAPSE_RUNS="hard hard_hmax0.08 soft_kn6000 soft_kn60000": the runs (each on every seed;
-#   default "hard soft_kn6000 soft_kn60000")
+#   default "hard soft_kn6000 soft_kn60000"); COLLAPSE_FIX_EXTRA="tol 3e-2": more fix keywords
+#   for the runs hard and hard_hmax*
 set -euo pipefail
 # shellcheck source=../common.sh
 source "$(dirname "${BASH_SOURCE[0]}")/../common.sh" friction_collapse_ "$@"
@@ -33,12 +34,13 @@ collapse() {
   local run="$1" seed="$2" d="$WORK/collapse_$1_$2" res loop steps stats
   mkdir -p "$d"
   case "$run" in
-    hard) (cd "$d" && "$LMP" -in "$EX/in.collapse" -var seed "$seed" "${SIZE[@]}" -log log.lammps \
-             -echo none -screen none > /dev/null) ;;
+    hard) (cd "$d" && "$LMP" -in "$EX/in.collapse" -var seed "$seed" -var fix_extra "${COLLAPSE_FIX_EXTRA:-}" \
+             "${SIZE[@]}" -log log.lammps -echo none -screen none > /dev/null) ;;
     hard_tol*) (cd "$d" && "$LMP" -in "$EX/in.collapse" -var seed "$seed" -var fix_extra "tol ${run#hard_tol}" \
                   "${SIZE[@]}" -log log.lammps -echo none -screen none > /dev/null) ;;
     hard_hmax*) (cd "$d" && "$LMP" -in "$EX/in.collapse" -var seed "$seed" -var hmax "${run#hard_hmax}" \
-                   "${SIZE[@]}" -log log.lammps -echo none -screen none > /dev/null) ;;
+                   -var fix_extra "${COLLAPSE_FIX_EXTRA:-}" "${SIZE[@]}" -log log.lammps -echo none \
+                   -screen none > /dev/null) ;;
     soft_kn*) (cd "$d" && "$SOFT_LMP" -in "$EX/in.collapse.soft" -var seed "$seed" -var kn "${run#soft_kn}" \
                  "${SIZE[@]}" -log log.lammps -echo none -screen none > /dev/null) ;;
   esac

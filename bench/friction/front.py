@@ -17,6 +17,7 @@ import concurrent.futures as cf
 import csv
 import math
 import os
+import re
 import sys
 import time
 from pathlib import Path
@@ -152,15 +153,18 @@ def main():
     if not a.quick and a.scene == "settle10":
         cones += [("hybrid", 1e-3, 0.02, "exact"), ("apgd", 1e-3, 0.02, "convex")]
     grid = [g + ("",) for g in grid] + cones
+    # a tol among --fix-extra's keywords is the one the fix takes (the last given): record it
+    given_tol = re.findall(r"\btol\s+(\S+)", a.fix_extra)
+    recorded = (lambda tol: float(given_tol[-1])) if given_tol else (lambda tol: tol)
     for solver, tol, h, cone in grid:
         rid = "%s_tol%g_h%g%s" % (solver, tol, h, "_" + cone if cone else "")
         extra = ("cone " + cone if cone else "") + (" " + a.fix_extra if a.fix_extra else "")
         runs.append((rid, "hard", hard_deck(scene, str(data), solver, tol, h, T, extra),
-                     dict(solver=solver + ("/" + cone if cone else ""), tol=tol, h=h)))
+                     dict(solver=solver + ("/" + cone if cone else ""), tol=recorded(tol), h=h)))
     # adaptive steps (fix dt/reset): up to 0.08, at most 0.1 d per step, the default solver
     rid = "hybrid_tol0.01_dtreset0.08"
     runs.append((rid, "hard", adaptive(hard_deck(scene, str(data), "hybrid", 1e-2, 0.02, T, a.fix_extra), 0.08,
-                                       0.1, T), dict(solver="hybrid/dt-reset", tol=1e-2, h=0.08)))
+                                       0.1, T), dict(solver="hybrid/dt-reset", tol=recorded(1e-2), h=0.08)))
     # the twins: static floor overlaps 1e-2, 1e-3 and 1e-4 of r (the third brackets a largest
     # overlap of 1e-3, issue 36's target 2, from below: the sampled largest overlaps of the
     # first two are 3-4e-2 and 5-6e-3)
