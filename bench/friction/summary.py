@@ -147,7 +147,9 @@ def main():
                  settle20=a.settle20 or d / "friction_front_settle20.csv",
                  cones=a.cones or d / "friction_cones.csv",
                  collapse=a.collapse or d / "friction_collapse.csv")
-    scenes = [settle("settle, 1210 spheres, t = 30", rows_of(paths["settle10"])),
+    quick = "quick" in Path(paths["settle10"]).name    # front.py --quick: 6 layers, t = 10
+    scenes = [settle("settle, 6 layers (front.py --quick), t = 10" if quick else
+                     "settle, 1210 spheres, t = 30", rows_of(paths["settle10"])),
               settle("settle, 8000 spheres, t = 12", rows_of(paths["settle20"]))]
     scenes += cones(rows_of(paths["cones"]))
     scenes.append(collapse(rows_of(paths["collapse"])))
