@@ -44,5 +44,41 @@ class TwinTimeAt(unittest.TestCase):
         self.assertEqual(report.twin_time_at([twin(0.0, 3.0), twin(1e-2, 5.0)], 1e-3), (None, False))
 
 
+class Summary(unittest.TestCase):
+    """bench/friction/summary.py on the recorded results: the 1210-sphere settle's row with
+    adaptive steps gives soft / hard at 1e-2 and 1e-3 as an independent log-log interpolation
+    of the same CSV between the twins that bracket each overlap."""
+
+    def test_recorded_settle_row(self):
+        import csv
+        import subprocess
+        import tempfile
+        root = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..")
+        res = os.path.join(root, "bench", "results", "friction", "amd-epyc")
+        front = os.path.join(res, "friction_front_target2.csv")
+        rows = {r["run"]: r for r in csv.DictReader(open(front))}
+        hard = float(rows["hybrid_tol0.01_dtreset0.08"]["loop_s"])
+        twins = sorted((float(r["overlap_max"]), float(r["loop_s"]))
+                       for r in rows.values() if r["kind"] == "soft")    # stiffest first
+
+        def at(x):
+            for (o2, t2), (o1, t1) in zip(twins, twins[1:]):    # o2 < o1
+                if o2 <= x <= o1:
+                    return math.exp(math.log(t1) + (math.log(x) - math.log(o1)) *
+                                    (math.log(t2) - math.log(t1)) / (math.log(o2) - math.log(o1)))
+            self.fail("no pair of twins brackets %g" % x)
+
+        with tempfile.TemporaryDirectory() as out:
+            subprocess.run([sys.executable, os.path.join(root, "bench", "friction", "summary.py"),
+                            "--settle10", front, "--settle20", "none", "--cones", "none",
+                            "--collapse", "none", "--out", out],
+                           check=True, capture_output=True, env=dict(os.environ, MPLBACKEND="Agg"))
+            table = open(os.path.join(out, "friction_summary.md")).read()
+        row = [l for l in table.splitlines() if "fix dt/reset to 0.08" in l]
+        self.assertEqual(len(row), 1, table)
+        cells = [c.strip() for c in row[0].split("|")]
+        self.assertEqual(cells[-2], "%.2f; %.2f" % (at(1e-2) / hard, at(1e-3) / hard))
+
+
 if __name__ == "__main__":
     unittest.main()
