@@ -154,8 +154,8 @@ def main():
         cones += [("hybrid", 1e-3, 0.02, "exact"), ("apgd", 1e-3, 0.02, "convex")]
     grid = [g + ("",) for g in grid] + cones
     # a tol among --fix-extra's keywords is the one the fix takes (the last given): record it
-    given_tol = re.findall(r"\btol\s+(\S+)", a.fix_extra)
-    recorded = (lambda tol: float(given_tol[-1])) if given_tol else (lambda tol: tol)
+    given_tol = [float(t) for t in re.findall(r"\btol\s+(\S+)", a.fix_extra)][-1:]
+    recorded = lambda tol: (given_tol or [tol])[0]
     for solver, tol, h, cone in grid:
         rid = "%s_tol%g_h%g%s" % (solver, tol, h, "_" + cone if cone else "")
         extra = ("cone " + cone if cone else "") + (" " + a.fix_extra if a.fix_extra else "")

@@ -27,13 +27,13 @@ def load(path):
     return rows
 
 
-def twin_time_at(soft, overlap):
+def twin_time_at(twins, overlap):
     """Issue 36's target 2 compares with soft twins at largest overlaps of 1e-2 and 1e-3 of the
     contact size, interpolated as issue 15 did: the twins' loop time against their sampled
-    largest overlap, linear in log-log between the two twins that bracket `overlap` (beyond
-    them, the nearest two extended: marked extrapolated). None with fewer than two twins."""
-    pts = sorted(((r["overlap_max"], r["loop_s"]) for r in soft if r["overlap_max"] > 0),
-                 reverse=True)
+    largest overlap (twins: (overlap, loop time) pairs), linear in log-log between the two
+    twins that bracket `overlap` (beyond them, the nearest two extended: marked extrapolated).
+    None with fewer than two twins."""
+    pts = sorted(((o, t) for o, t in twins if o > 0), reverse=True)
     if len(pts) < 2:
         return None, False
     pair, outside = None, True
@@ -56,7 +56,8 @@ def main():
     soft = {r["tol"]: r for r in rows if r["kind"] == "soft"}
     hard = [r for r in rows if r["kind"] == "hard"]
     s2, s3 = soft.get(1e-2), soft.get(1e-3)
-    at = {x: twin_time_at(list(soft.values()), x) for x in (1e-2, 1e-3)}
+    at = {x: twin_time_at([(r["overlap_max"], r["loop_s"]) for r in soft.values()], x)
+          for x in (1e-2, 1e-3)}
     out = ["| run | tol | h | mean height at T | at rest from t | largest overlap (end) | it/step (max) | maxiter stops | loop (s) | / soft 1e-2 | / soft 1e-3 | soft / hard at largest overlaps 1e-2; 1e-3 |",
            "|---|---|---|---|---|---|---|---|---|---|---|---|"]
     for r in hard + list(soft.values()):

@@ -69,8 +69,7 @@ class Scene:
     def ratios(self, hard):
         """soft / hard at each twin as run, and at 1e-2, 1e-3 where the twins' overlaps are known."""
         as_run = ["%.2f" % (s["loop"] / hard["loop"]) for s in self.soft]
-        known = [dict(overlap_max=s["overlap"], loop_s=s["loop"]) for s in self.soft
-                 if s["overlap"] == s["overlap"]]
+        known = [(s["overlap"], s["loop"]) for s in self.soft if s["overlap"] == s["overlap"]]
         at = []
         for x in (1e-2, 1e-3):
             t, far = report.twin_time_at(known, x)

@@ -13,7 +13,7 @@ import report  # noqa: E402
 
 
 def twin(overlap, loop):
-    return {"overlap_max": overlap, "loop_s": loop, "kind": "soft"}
+    return (overlap, loop)
 
 
 class TwinTimeAt(unittest.TestCase):
